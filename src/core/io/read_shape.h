@@ -1,0 +1,25 @@
+// Reading CAD files into OpenCASCADE shapes, and extracting the valid closed solids of a shape.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Solid.hxx>
+
+namespace cadmedial {
+
+/// Reads a STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep/.brp) file, chosen by extension.
+/// Throws InvalidInput naming the file and the problem (missing, unreadable, empty, broken).
+TopoDS_Shape read_shape_file(const std::string& path);
+
+/// Reads OpenCASCADE BREP text (as FreeCAD's Shape.exportBrepToString() writes it).
+/// Throws InvalidInput when the text does not parse or holds no shape.
+TopoDS_Shape read_brep_string(const std::string& text);
+
+/// The solids of a shape, in TopExp_Explorer order. Closed shells that are not yet solids are made
+/// solids; every solid is checked (BRepCheck_Analyzer, closedness, positive volume).
+/// Throws InvalidInput saying which solid, face or edge is wrong, or that there is no solid.
+std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape);
+
+}  // namespace cadmedial

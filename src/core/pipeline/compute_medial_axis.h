@@ -1,0 +1,64 @@
+// The whole CAD_MEDIAL pipeline on a shape: solids -> features -> samples -> Delaunay -> medial mesh.
+// No geometry of its own: it chains the stages, times them and checks parameters.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <TopoDS_Shape.hxx>
+
+#include "../progress.h"
+#include "../types.h"
+
+namespace cadmedial {
+
+/// Per-solid figures.
+struct SolidStats {
+  std::size_t samples = 0;
+  std::size_t vertices = 0;
+  std::size_t faces = 0;
+  std::size_t convex_edges = 0;
+  std::size_t concave_edges = 0;
+  std::size_t smooth_edges = 0;
+  std::size_t nonconcave_corners = 0;
+  std::size_t dropped_faces = 0;   ///< selected faces outside the solid or in stray pieces
+};
+
+struct ComputeStats {
+  double spacing = 0.0;           ///< the sample spacing used (model units)
+  std::size_t samples = 0;
+  std::size_t vertices = 0;
+  std::size_t faces = 0;
+  std::vector<SolidStats> solids;
+  Timings timings;                ///< per stage, plus "total"; includes "delaunay"
+  double peak_rss_mb = 0.0;
+};
+
+struct ComputeResult {
+  MedialMesh mesh;
+  ComputeStats stats;
+};
+
+/// Checks parameters; throws InvalidInput naming the field (theta, rho, spacing, samples).
+void check_params(const ComputeParams& params);
+
+/// The sample spacing that params give for these solids (explicit spacing, or derived from the
+/// target count by surface area), and the approximate number of samples it yields.
+struct SamplingPlan {
+  double spacing = 0.0;
+  std::size_t estimated_samples = 0;
+};
+SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& params);
+
+/// Computes the inner medial axis of every solid of `shape`, each on its own; face_solid holds the
+/// solid's index. Throws InvalidInput (bad shape or parameters), GeometryError, or Cancelled.
+ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams& params,
+                                  const Progress& progress = {});
+
+/// JSON object with samples, vertices, faces, spacing, timings {stage: seconds}, peak_rss_mb, solids.
+std::string stats_to_json(const ComputeStats& stats);
+
+/// Peak resident set size of this process so far, MiB.
+double peak_rss_mb();
+
+}  // namespace cadmedial

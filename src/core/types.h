@@ -1,0 +1,66 @@
+// Plain data shared by every stage of the pipeline: points, the medial mesh, parameters.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cadmedial {
+
+using Point3 = std::array<double, 3>;
+
+/// What produced a face of the medial mesh.
+enum class FaceKind : std::uint8_t {
+  Voronoi = 0,  ///< a Voronoi facet dual to a selected Delaunay edge (3, 4.2.6)
+  Edge = 1,     ///< a completion triangle at a convex edge (4.2.2)
+  Corner = 2,   ///< a completion triangle at a non-concave corner (4.2.3)
+};
+
+const char* face_kind_name(FaceKind kind);
+
+/// An indexed polygon mesh: faces share vertices. Polygons are stored flat (CSR):
+/// face f has the vertices face_vertices[face_start[f] .. face_start[f+1]).
+struct MedialMesh {
+  std::vector<Point3> vertices;    ///< #V positions
+  std::vector<double> radius;      ///< #V medial radius: distance to the nearest sample
+  std::vector<int> face_start{0};  ///< #F+1 offsets into face_vertices
+  std::vector<int> face_vertices;  ///< vertex indices of all polygons, counter-clockwise is not implied
+  std::vector<FaceKind> kind;      ///< #F
+  std::vector<int> solid;          ///< #F index of the input solid the face belongs to
+
+  std::size_t num_vertices() const { return vertices.size(); }
+  std::size_t num_faces() const { return kind.size(); }
+  int face_size(std::size_t f) const { return face_start[f + 1] - face_start[f]; }
+  const int* face(std::size_t f) const { return face_vertices.data() + face_start[f]; }
+
+  /// Appends a polygon; returns its index.
+  std::size_t add_face(const std::vector<int>& polygon, FaceKind face_kind, int solid_index);
+  /// Appends another mesh (its vertices are renumbered).
+  void append(const MedialMesh& other);
+};
+
+/// Density of the boundary sample (4.2.1). Exactly one of spacing / target_samples may be set;
+/// with neither, the spacing is chosen for about default_target_samples samples.
+struct SamplingParams {
+  double spacing = 0.0;              ///< model units; 0 = derive
+  std::size_t target_samples = 0;    ///< approximate total over all solids; 0 = derive
+  static constexpr std::size_t default_target_samples = 20000;
+};
+
+/// Selection thresholds of CAD_MEDIAL (section 3 and 4.2.2).
+struct MedialParams {
+  double theta_deg = 5.0;  ///< Angle condition threshold, degrees, in (0, 90)
+  double rho = 8.0;        ///< Ratio condition threshold, > 0
+};
+
+struct ComputeParams {
+  SamplingParams sampling;
+  MedialParams medial;
+};
+
+/// Seconds per named stage, in the order they ran.
+using Timings = std::vector<std::pair<std::string, double>>;
+
+}  // namespace cadmedial
