@@ -24,7 +24,8 @@ std::size_t count(const TopoDS_Shape& shape, TopAbs_ShapeEnum type) {
 
 std::string box_text(const TopoDS_Shape& shape) {
   Bnd_Box box;
-  BRepBndLib::Add(shape, box);
+  // The exact box: BRepBndLib::Add would widen it by the shape's tolerance.
+  BRepBndLib::AddOptimal(shape, box, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
   if (box.IsVoid()) return "empty";
   double x0, y0, z0, x1, y1, z1;
   box.Get(x0, y0, z0, x1, y1, z1);
@@ -47,8 +48,8 @@ int run_info(const Args& args) {
     GProp_GProps volume, area;
     BRepGProp::VolumeProperties(s, volume);
     BRepGProp::SurfaceProperties(s, area);
-    out << "  solid " << i + 1 << ": " << count(s, TopAbs_FACE) << " faces, " << count(s, TopAbs_EDGE) << " edges, "
-        << count(s, TopAbs_VERTEX) << " vertices, volume " << volume.Mass() << ", area " << area.Mass()
+    out << "  solid " << i + 1 << ": faces " << count(s, TopAbs_FACE) << ", edges " << count(s, TopAbs_EDGE)
+        << ", vertices " << count(s, TopAbs_VERTEX) << ", volume " << volume.Mass() << ", area " << area.Mass()
         << ", box " << box_text(s) << "\n";
   }
   out << "  bounding box: " << box_text(loaded.compound) << "\n";

@@ -1,8 +1,11 @@
 // The medial mesh as a compound of planar faces, serialised as BREP text.
 //
 // Speed: vertices are made once per mesh vertex and edges once per mesh edge, and shared by
-// every face that uses them, so building costs one MakeFace per polygon (1e5 polygons take seconds).
-// Sharing also makes the compound connected, as FreeCAD expects of a surface.
+// every face that uses them; sharing also makes the compound connected, as FreeCAD expects of a
+// surface. Faces are built directly on the polygon's own plane (Newell normal through the
+// centroid) with BRep_Builder: BRepBuilderAPI_MakeFace(wire, OnlyPlane) found the same plane by
+// least squares at about 160 us per polygon, five times the cost of everything else together
+// (measured: 1e5 triangles, 16 s against 3.5 s for BRepTools::Write).
 #include "medial_mesh_to_brep.h"
 
 #include <cmath>
@@ -11,16 +14,19 @@
 #include <unordered_map>
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
-#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <Geom_Plane.hxx>
+#include <Precision.hxx>
 #include <Standard_Failure.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
+#include <gp_Dir.hxx>
 #include <gp_Pnt.hxx>
 #include <gp_Vec.hxx>
 
@@ -53,15 +59,26 @@ class Builder {
     return flip ? TopoDS::Edge(it->second.Reversed()) : it->second;
   }
 
-  // Adds the planar face bounded by the closed loop `loop`; false if OpenCASCADE finds no plane.
-  bool add_face(const std::vector<int>& loop) {
+  // Adds the planar face bounded by the closed loop `loop`, whose vector area (Newell) is
+  // `normal`; false when a vertex lies off the plane by more than the vertices' tolerance.
+  bool add_face(const std::vector<int>& loop, const gp_Vec& normal) {
+    gp_XYZ centroid(0, 0, 0);
+    for (int v : loop) centroid += point(v).XYZ();
+    centroid /= static_cast<double>(loop.size());
+    const gp_Dir n(normal);
+    for (int v : loop)
+      if (std::abs((point(v).XYZ() - centroid).Dot(n.XYZ())) > Precision::Confusion()) return false;
+
     TopoDS_Wire wire;
     builder_.MakeWire(wire);
     for (std::size_t i = 0; i < loop.size(); ++i) builder_.Add(wire, edge(loop[i], loop[(i + 1) % loop.size()]));
     wire.Closed(true);
-    BRepBuilderAPI_MakeFace face(wire, /*OnlyPlane=*/true);
-    if (!face.IsDone()) return false;
-    builder_.Add(compound_, face.Face());
+    // The loop turns counter-clockwise around its Newell normal, so with the plane's normal along
+    // it the loop is the face's outer boundary as it stands (material on the left).
+    TopoDS_Face face;
+    builder_.MakeFace(face, new Geom_Plane(gp_Pnt(centroid), n), Precision::Confusion());
+    builder_.Add(face, wire);
+    builder_.Add(compound_, face);
     return true;
   }
 
@@ -114,14 +131,16 @@ std::string medial_mesh_to_brep(const MedialMesh& mesh) {
       // Zero area against the polygon's size: collinear points bound no face.
       double perimeter = 0.0;
       for (std::size_t i = 0; i < loop.size(); ++i) perimeter += b.point(loop[i]).Distance(b.point(loop[(i + 1) % loop.size()]));
-      if (area_vector(b, loop).Magnitude() <= 1e-12 * perimeter * perimeter) continue;
+      const gp_Vec normal = area_vector(b, loop);
+      if (normal.Magnitude() <= 1e-12 * perimeter * perimeter) continue;
 
-      if (b.add_face(loop)) continue;
+      if (b.add_face(loop, normal)) continue;
       // Not planar within tolerance (a Voronoi facet from a near-degenerate Delaunay cell): its fan
       // triangles are planar by construction and cover the same surface.
       for (std::size_t i = 1; i + 1 < loop.size(); ++i) {
         const std::vector<int> tri{loop[0], loop[i], loop[i + 1]};
-        if (area_vector(b, tri).Magnitude() > 0.0) b.add_face(tri);
+        const gp_Vec tri_normal = area_vector(b, tri);
+        if (tri_normal.Magnitude() > 1e-12 * perimeter * perimeter) b.add_face(tri, tri_normal);
       }
     }
     std::ostringstream out;

@@ -168,9 +168,16 @@ std::string status_name(BRepCheck_Status status) {
   return text;
 }
 
-// The first defect BRepCheck_Analyzer found on a sub-shape of `solid`, as "face 3: BRepCheck_...",
-// smallest sub-shapes first since a bad edge also makes its faces invalid.
+// The first defect BRepCheck_Analyzer found on a sub-shape of `solid`, as "vertex 3 is invalid
+// (BRepCheck_...)", smallest sub-shapes first since a bad vertex also makes its edges and faces
+// invalid. A defect can be recorded on the shape itself or "in the context" of a larger one (a
+// vertex that is off its edge's curve): both are looked at.
 std::string first_check_failure(const TopoDS_Shape& solid, const BRepCheck_Analyzer& analyzer) {
+  auto first_error = [](const BRepCheck_ListOfStatus& list) {
+    for (BRepCheck_ListOfStatus::Iterator it(list); it.More(); it.Next())
+      if (it.Value() != BRepCheck_NoError) return it.Value();
+    return BRepCheck_NoError;
+  };
   const std::pair<TopAbs_ShapeEnum, const char*> kinds[] = {
       {TopAbs_VERTEX, "vertex"}, {TopAbs_EDGE, "edge"}, {TopAbs_WIRE, "wire"},
       {TopAbs_FACE, "face"},     {TopAbs_SHELL, "shell"}};
@@ -178,23 +185,22 @@ std::string first_check_failure(const TopoDS_Shape& solid, const BRepCheck_Analy
     TopTools_IndexedMapOfShape subs;
     TopExp::MapShapes(solid, type, subs);
     for (int i = 1; i <= subs.Extent(); ++i) {
-      if (analyzer.IsValid(subs(i))) continue;
-      std::string what = "BRepCheck found a defect";
-      const Handle(BRepCheck_Result)& result = analyzer.Result(subs(i));
-      if (!result.IsNull()) {
-        auto first_error = [](const BRepCheck_ListOfStatus& list) {
-          for (BRepCheck_ListOfStatus::Iterator it(list); it.More(); it.Next())
-            if (it.Value() != BRepCheck_NoError) return it.Value();
-          return BRepCheck_NoError;
-        };
-        BRepCheck_Status status = first_error(result->Status());
-        for (result->InitContextIterator(); status == BRepCheck_NoError && result->MoreShapeInContext();
-             result->NextShapeInContext())
-          status = first_error(result->StatusOnShape());
-        if (status != BRepCheck_NoError) what = status_name(status);
+      Handle(BRepCheck_Result) result;
+      try {
+        result = analyzer.Result(subs(i));
+      } catch (const Standard_Failure&) {
+        continue;  // not analysed (the analyzer keeps only what it reached)
       }
-      std::string where = type == TopAbs_EDGE ? edge_location(TopoDS::Edge(subs(i))) : "";
-      return std::string(type_name) + " " + std::to_string(i) + " is invalid (" + what + ")" + where;
+      if (result.IsNull()) continue;
+      BRepCheck_Status status = first_error(result->Status());
+      for (result->InitContextIterator(); status == BRepCheck_NoError && result->MoreShapeInContext();
+           result->NextShapeInContext())
+        status = first_error(result->StatusOnShape());
+      if (status == BRepCheck_NoError) continue;
+      std::string where;
+      if (type == TopAbs_EDGE) where = edge_location(TopoDS::Edge(subs(i)));
+      if (type == TopAbs_VERTEX) where = " at " + point_text(BRep_Tool::Pnt(TopoDS::Vertex(subs(i))));
+      return std::string(type_name) + " " + std::to_string(i) + " is invalid (" + status_name(status) + ")" + where;
     }
   }
   return "the solid is invalid (BRepCheck_Analyzer names no sub-shape)";
@@ -330,7 +336,7 @@ TopoDS_Shape read_shape_file(const std::string& path) {
     if (shape.IsNull()) throw InvalidInput(path + ": the file holds no shape");
     return shape;
   } catch (const Standard_Failure& e) {
-    throw InvalidInput(path + ": cannot read: " + failure_text(e));
+    throw InvalidInput(path + ": cannot read (broken or truncated file?): " + failure_text(e));
   } catch (const InvalidInput&) {
     throw;
   } catch (const std::exception& e) {
