@@ -225,18 +225,21 @@ TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name) {
   }
   if (nshells == 0) throw InvalidInput(name + ": has no shell (an empty solid)");
 
-  BRepCheck_Analyzer analyzer(solid);
-  if (!analyzer.IsValid()) throw InvalidInput(name + ": " + first_check_failure(solid, analyzer));
-
+  // Orientation first: an inside-out solid (negative volume) is fixed by reversing it, and only
+  // then checked, so that BRepCheck does not refuse it for its orientation.
   GProp_GProps props;
   BRepGProp::VolumeProperties(solid, props);
-  double volume = props.Mass();
+  const double volume = props.Mass();
   const double d = diagonal(solid);
-  // Relative to the box: a volume this small against d^3 is a flat or inside-out-and-cancelled shape.
+  // Relative to the box: a volume this small against d^3 is a flat shape, or one whose parts
+  // cancel out (half of it inside out).
   const double tiny = 1e-12 * d * d * d;
   if (!std::isfinite(volume) || std::abs(volume) <= tiny)
-    throw InvalidInput(name + ": has zero volume");
+    throw InvalidInput(name + ": has zero volume (flat, or partly inside out)");
   if (volume < 0) solid.Reverse();
+
+  BRepCheck_Analyzer analyzer(solid);
+  if (!analyzer.IsValid()) throw InvalidInput(name + ": " + first_check_failure(solid, analyzer));
   return solid;
 }
 
@@ -289,9 +292,10 @@ std::vector<TopoDS_Shell> sew_faces(const std::vector<TopoDS_Face>& faces) {
   BRepBuilderAPI_Sewing sewing(tol);
   for (const TopoDS_Face& f : faces) sewing.Add(f);
   sewing.Perform();
-  const std::string what = std::to_string(faces.size()) + " loose face" + (faces.size() == 1 ? "" : "s");
+  const bool one = faces.size() == 1;
+  const std::string what = std::to_string(faces.size()) + (one ? " loose face" : " loose faces");
   if (sewing.NbFreeEdges() > 0)
-    throw InvalidInput(what + " (not in any solid or shell) do not sew into closed shells: " +
+    throw InvalidInput(what + " (not in any solid or shell)" + (one ? " does" : " do") + " not sew into closed shells: " +
                        std::to_string(sewing.NbFreeEdges()) + " edges stay open, e.g. one" +
                        edge_location(sewing.FreeEdge(1)));
   if (sewing.NbMultipleEdges() > 0)
