@@ -12,9 +12,11 @@ namespace cadmedial::cli {
 struct LoadedSolids {
   std::vector<TopoDS_Solid> solids;
   TopoDS_Compound compound;  ///< the checked solids, in order: what the engine is given
+  std::vector<std::string> skipped;  ///< open construction surfaces left out beside the solids
 };
 
-/// read_shape_file + extract_solids; InvalidInput messages start with `path: `.
+/// read_shape_file + extract_solids; InvalidInput messages start with `path: `. What was skipped
+/// is printed on stderr as a warning.
 LoadedSolids load_solids(const std::string& path);
 
 }  // namespace cadmedial::cli

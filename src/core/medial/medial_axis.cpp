@@ -168,23 +168,26 @@ void complete_corners(const Delaunay& dt, const std::vector<Vertex>& handle, con
   }
 }
 
-// 4.2.5 with the exact solid at hand. A Voronoi vertex x is the centre of an empty ball through
-// its cell's samples p; each sample votes with the side of its face's tangent plane that x lies
-// on (at a sharp edge sample, the two faces' half-spaces: both for convex, either for concave).
-// A vote counts only when x clears the plane by more than the surface can bend away from it
-// within |x - p| (kappa |x - p|^2 / 2). Vertices without two agreeing votes and no dissent go
-// to the exact B-rep classifier.
+// 4.2.5 with the exact solid at hand. A Voronoi vertex x is the centre of a ball through its
+// cell's samples p that holds no sample. Each sample votes with the side of its face's tangent
+// plane that x lies on (at a sharp edge, the two faces' half-spaces: inside both for convex,
+// either for concave). A vote counts only when x clears the plane by more than the surface can
+// bend within |x - p| (kappa |x - p|^2 / 2); the empty ball keeps other sheets of the surface
+// from passing between p and x unless the sampling missed them. Vertices with a dissenting vote
+// or none go to the exact B-rep classifier; vertices beyond the samples' box or with a ball
+// larger than it are outside.
 int vote(const Samples& samples, int s, const Point3& x) {
   const Point3 d = sub(x, samples.points[s]);
   const double r2 = dot(d, d);
   const double margin = 0.5 * samples.curvature[s] * r2 + 1e-12 * std::sqrt(r2);
-  if (samples.curvature[s] * std::sqrt(r2) > 0.5) return 0;  // the tangent plane says nothing there
   const SampleTag tag = samples.tag[s];
-  if (tag == SampleTag::Face || tag == SampleTag::Triplet) {
+  const bool on_edge = tag == SampleTag::Edge || tag == SampleTag::Ball;
+  if (tag == SampleTag::Face || tag == SampleTag::Triplet || (on_edge && samples.edge_convex[s] == 0)) {
     const double a = dot(d, samples.normal[s]);
+    if (dot(samples.normal[s], samples.normal[s]) == 0) return 0;
     return a < -margin ? 1 : a > margin ? -1 : 0;
   }
-  if ((tag == SampleTag::Edge || tag == SampleTag::Ball) && samples.edge_convex[s] != 0) {
+  if (on_edge) {
     const double a1 = dot(d, samples.normal[s]), a2 = dot(d, samples.normal2[s]);
     const bool in1 = a1 < -margin, in2 = a2 < -margin, out1 = a1 > margin, out2 = a2 > margin;
     if (samples.edge_convex[s] == 1) return (in1 && in2) ? 1 : (out1 || out2) ? -1 : 0;
@@ -202,17 +205,25 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
   for (int node : mc.nodes)
     if (node >= 0) used[node] = 1;
   for (int node : mc.points) used[node] = 1;
+  Point3 lo = samples.points.empty() ? Point3{0, 0, 0} : samples.points[0], hi = lo;
+  for (const Point3& p : samples.points)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const double diag = norm(sub(hi, lo));
   for (size_t id = 0; id < n; ++id) {
     if (!used[id]) continue;
+    const Point3& x = mc.centers[id];
+    bool beyond = mc.radii[id] > diag;
+    for (int k = 0; k < 3; ++k) beyond = beyond || x[k] < lo[k] || x[k] > hi[k];
+    if (beyond) continue;  // label 0
     int in = 0, out = 0;
     for (int j = 0; j < 4; ++j) {
-      const int v = vote(samples, mc.cells[id]->vertex(j)->info(), mc.centers[id]);
+      const int v = vote(samples, mc.cells[id]->vertex(j)->info(), x);
       in += v > 0;
       out += v < 0;
     }
-    if (in >= 2 && out == 0)
+    if (in >= 1 && out == 0)
       label[id] = 1;
-    else if (out >= 2 && in == 0)
+    else if (out >= 1 && in == 0)
       label[id] = 0;
     else
       unsure.push_back(static_cast<int>(id));

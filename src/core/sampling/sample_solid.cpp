@@ -124,8 +124,8 @@ class Sampler {
     }
   }
 
-  // The two faces' normals and the local character at a sample of a sharp edge: what the inner
-  // axis separation needs to tell inside from outside near it.
+  // The two faces' normals and the local character at an edge sample: what the inner axis
+  // separation needs to tell inside from outside near it.
   void describe_edge_sample(int id, int e, double t) {
     try {
       const EdgePoint ep = edge_point(f_, e, t);
@@ -209,7 +209,7 @@ class Sampler {
           const int id = add(to_point(curve.Value(t)), tag, excl);
           out_.edge[id] = e;
           chain.push_back({id, t});
-          if (sharp) describe_edge_sample(id, e, t);
+          describe_edge_sample(id, e, t);
         }
       } catch (const Standard_Failure& err) {
         throw GeometryError("edge " + std::to_string(e + 1) + ": cannot sample: " + err.GetMessageString());
