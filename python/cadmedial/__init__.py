@@ -16,8 +16,9 @@ import os as _os
 def _find_core():
     # The compiled module normally sits beside this file (installed addon). From a source checkout
     # it is in the build tree: CADMEDIAL_CORE_DIR names that folder, else <repo>/build is tried.
+    from importlib.machinery import EXTENSION_SUFFIXES
     here = _os.path.dirname(_os.path.abspath(__file__))
-    if any(name.startswith("_core.") for name in _os.listdir(here)):
+    if any(_os.path.exists(_os.path.join(here, "_core" + suffix)) for suffix in EXTENSION_SUFFIXES):
         return
     candidates = [_os.environ.get("CADMEDIAL_CORE_DIR", ""),
                   _os.path.join(here, _os.pardir, _os.pardir, "build", "python", "cadmedial")]
