@@ -5,7 +5,8 @@ Saved inside .FCStd files, keep them: module ``cadmedial.app.medial_axis``, clas
 object type ``Mesh::FeaturePython``, property names below.
 
 What the document keeps (so reopening needs no recompute):
-  Mesh          the polygons fanned into triangles; points in the engine's vertex order
+  Mesh          the polygons fanned into triangles (all of them: non-manifold junctions too);
+                points in the engine's vertex order
   RadiusColors  one colour per point (the view provider's per-vertex colouring)
   ResultFile    the engine's own mesh as binary PLY (polygons, radius, kind, solid) for export
                 and for the Part shape
@@ -159,7 +160,11 @@ def store_result(obj, result):
     """Puts a MedialAxisResult into obj's Mesh, colours, counts and ResultFile."""
     triangles = result.triangles()
     points = [App.Vector(*p) for p in result.vertices.tolist()]
-    obj.Mesh = Mesh.Mesh((points, [tuple(t) for t in triangles.tolist()]))
+    mesh = Mesh.Mesh()
+    # False: no manifold check. The medial surface is non-manifold where sheets meet, and the
+    # check (also done by Mesh.Mesh((points, facets))) would delete every facet at a junction.
+    mesh.addFacets((points, [tuple(t) for t in triangles.tolist()]), False)
+    obj.Mesh = mesh
     if result.num_vertices:
         low, high = float(result.radius.min()), float(result.radius.max())
     else:
@@ -223,7 +228,7 @@ def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, sha
     obj.Rho = rho
     proxy.pending = (parameters_of(obj), result)
     attach_view_provider(obj, MedialAxis.Type)
-    obj.recompute()
+    doc.recompute([obj])  # unlike obj.recompute(), this also clears the object's Touched flag
     if shape:
         from .medial_shape import make_medial_shape  # here: medial_shape imports this module
         make_medial_shape(obj)

@@ -46,5 +46,5 @@ def make_medial_shape(medial_axis, name="MedialShape"):
     obj.Label = "%s faces" % medial_axis.Label
     obj.Base = medial_axis
     attach_view_provider(obj, MedialShape.Type)
-    obj.recompute()
+    obj.Document.recompute([obj])
     return obj

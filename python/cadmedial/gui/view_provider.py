@@ -69,10 +69,12 @@ class ViewProviderMedialAxis:
 
 
 class ViewProviderMedialShape:
-    """The Part feature of planar faces: default Part display, our icon."""
+    """The Part feature of planar faces: default Part display, our icon. Hidden at first: it
+    lies exactly on the coloured mesh (Space shows it)."""
 
     def __init__(self, vobj):
         vobj.Proxy = self
+        vobj.Visibility = False
 
     def attach(self, vobj):
         self.Object = vobj.Object
