@@ -153,6 +153,45 @@ def run():
     wait_until(lambda: task_panel.active_panel is None, 300, "the two computes")
     after = [o.Name for o in doc.Objects if o.Name.startswith("MedialAxis")]
     report["features_for_two_boxes"] = len(after) - len(before)
+
+    # Stop during a long compute: nothing is added.
+    count = len(doc.Objects)
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(box)
+    Gui.runCommand("MedialAxis_Create")
+    settle(0.3)
+    panel = task_panel.active_panel
+    panel.samples.setValue(3000000)
+    panel.accept()
+    settle(0.5)
+    panel.stop.click()
+    wait_until(lambda: panel.job is None, 120, "the stopped compute to end")
+    report["stopped_message"] = panel.stage.text()
+    report["objects_added_by_stop"] = len(doc.Objects) - count
+    panel.reject()
+    settle(0.3)
+    report["dialog_open_after_reject"] = Gui.Control.activeDialog()
+
+    # Editing: the task panel on an existing feature changes its parameters and recomputes.
+    Gui.ActiveDocument.setEdit(feature.Name)
+    settle(0.3)
+    panel = task_panel.active_panel
+    report["edit_panel_for"] = panel.edit.Name if panel and panel.edit else None
+    panel.theta.setValue(10.0)
+    panel.accept()
+    settle(0.5)
+    report["edited"] = {"theta": feature.Theta, "status": feature.Status,
+                        "dialog_open": Gui.Control.activeDialog()}
+
+    # The console one-liner gets the coloured view provider too.
+    cube = doc.addObject("Part::Box", "Cube")
+    cube.Placement.Base = App.Vector(0, 60, 0)
+    doc.recompute()
+    made = cadmedial.app.make_medial_axis(cube, samples=1000)
+    settle(0.3)
+    report["console"] = {
+        "proxy": type(made.ViewObject.Proxy).__name__, "coloring": made.ViewObject.Coloring,
+        "colors": len(made.RadiusColors), "points": made.Mesh.CountPoints}
     report["steps"].append("done")
 
 

@@ -113,3 +113,21 @@ def test_face_gives_an_error_in_the_report_and_no_object(smoke):
     assert smoke["face_error"].startswith("InvalidInput")
     assert smoke["objects_added_by_face"] == 0
     assert smoke["report_view_has_error"] is True
+
+
+def test_stop_cancels_the_compute_and_adds_nothing(smoke):
+    assert smoke["stopped_message"].startswith("Stopped")
+    assert smoke["objects_added_by_stop"] == 0
+    assert smoke["dialog_open_after_reject"] is False
+
+
+def test_task_panel_edits_an_existing_feature(smoke):
+    assert smoke["edit_panel_for"] == "MedialAxis"
+    assert smoke["edited"] == {"theta": 10.0, "status": "ok", "dialog_open": False}
+
+
+def test_console_one_liner_gets_the_coloured_view(smoke):
+    console = smoke["console"]
+    assert console["proxy"] == "ViewProviderMedialAxis"
+    assert console["coloring"] is True
+    assert console["colors"] == console["points"] > 0

@@ -213,7 +213,11 @@ class TaskPanelMedialAxis:
         self._add_objects(job.results, job.params)
 
     def _add_objects(self, results, params):
-        doc = self.sources[0].Document
+        try:
+            doc = self.sources[0].Document
+        except Exception as error:  # the source was deleted while the engine worked
+            self._show_error(error)
+            return
         doc.openTransaction("Medial axis")
         try:
             for source, result in zip(self.sources, results):
