@@ -225,18 +225,21 @@ TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name) {
   }
   if (nshells == 0) throw InvalidInput(name + ": has no shell (an empty solid)");
 
-  BRepCheck_Analyzer analyzer(solid);
-  if (!analyzer.IsValid()) throw InvalidInput(name + ": " + first_check_failure(solid, analyzer));
-
+  // Orientation first: an inside-out solid (negative volume) is fixed by reversing it, and only
+  // then checked, so that BRepCheck does not refuse it for its orientation.
   GProp_GProps props;
   BRepGProp::VolumeProperties(solid, props);
-  double volume = props.Mass();
+  const double volume = props.Mass();
   const double d = diagonal(solid);
-  // Relative to the box: a volume this small against d^3 is a flat or inside-out-and-cancelled shape.
+  // Relative to the box: a volume this small against d^3 is a flat shape, or one whose parts
+  // cancel out (half of it inside out).
   const double tiny = 1e-12 * d * d * d;
   if (!std::isfinite(volume) || std::abs(volume) <= tiny)
-    throw InvalidInput(name + ": has zero volume");
+    throw InvalidInput(name + ": has zero volume (flat, or partly inside out)");
   if (volume < 0) solid.Reverse();
+
+  BRepCheck_Analyzer analyzer(solid);
+  if (!analyzer.IsValid()) throw InvalidInput(name + ": " + first_check_failure(solid, analyzer));
   return solid;
 }
 
@@ -289,9 +292,10 @@ std::vector<TopoDS_Shell> sew_faces(const std::vector<TopoDS_Face>& faces) {
   BRepBuilderAPI_Sewing sewing(tol);
   for (const TopoDS_Face& f : faces) sewing.Add(f);
   sewing.Perform();
-  const std::string what = std::to_string(faces.size()) + " loose face" + (faces.size() == 1 ? "" : "s");
+  const bool one = faces.size() == 1;
+  const std::string what = std::to_string(faces.size()) + (one ? " loose face" : " loose faces");
   if (sewing.NbFreeEdges() > 0)
-    throw InvalidInput(what + " (not in any solid or shell) do not sew into closed shells: " +
+    throw InvalidInput(what + " (not in any solid or shell)" + (one ? " does" : " do") + " not sew into closed shells: " +
                        std::to_string(sewing.NbFreeEdges()) + " edges stay open, e.g. one" +
                        edge_location(sewing.FreeEdge(1)));
   if (sewing.NbMultipleEdges() > 0)
@@ -359,31 +363,57 @@ TopoDS_Shape read_brep_string(const std::string& text) {
   }
 }
 
-std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape) {
+std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped) {
   if (shape.IsNull()) throw InvalidInput("the shape is empty (null)");
   try {
     Parts parts;
     collect(shape, parts);
 
     std::vector<TopoDS_Solid> solids;
+    std::vector<std::string> open_parts;  // refused only when nothing else is there
     for (std::size_t i = 0; i < parts.solids.size(); ++i)
       solids.push_back(checked_solid(parts.solids[i], "solid " + std::to_string(solids.size() + 1)));
 
-    // Shells that are not inside a solid: each must be closed; then it becomes a solid.
+    // Shells that are not inside a solid: each must be closed; then it becomes a solid. STEP
+    // exporters often write a part as a shell whose faces do not share their edges (each face has
+    // its own copy): sewing closes such a shell, and only a shell that stays open is refused.
     for (std::size_t i = 0; i < parts.shells.size(); ++i) {
       TopTools_IndexedMapOfShape edge_index;
       TopExp::MapShapes(parts.shells[i], TopAbs_EDGE, edge_index);
       const std::string why = open_or_nonmanifold_edge(parts.shells[i], edge_index);
-      if (!why.empty()) throw InvalidInput("shell " + std::to_string(i + 1) + " (not a solid): " + why);
+      if (!why.empty()) {
+        std::vector<TopoDS_Face> faces;
+        for (TopExp_Explorer ex(parts.shells[i], TopAbs_FACE); ex.More(); ex.Next()) faces.push_back(TopoDS::Face(ex.Current()));
+        std::vector<TopoDS_Shell> sewn;
+        try {
+          sewn = sew_faces(faces);
+        } catch (const InvalidInput&) {
+          const std::string msg = "shell " + std::to_string(i + 1) + " (not a solid): " + why + "; sewing does not close it";
+          open_parts.push_back(msg);
+          continue;
+        }
+        for (const TopoDS_Shell& shell : sewn)
+          solids.push_back(checked_solid(solid_from_closed_shell(shell), "solid " + std::to_string(solids.size() + 1) +
+                                                                           " (sewn from shell " + std::to_string(i + 1) + ")"));
+        continue;
+      }
       solids.push_back(checked_solid(solid_from_closed_shell(parts.shells[i]),
                                      "solid " + std::to_string(solids.size() + 1) + " (made from shell " +
                                          std::to_string(i + 1) + ")"));
     }
 
     if (!parts.faces.empty()) {
-      for (const TopoDS_Shell& shell : sew_faces(parts.faces))
-        solids.push_back(checked_solid(solid_from_closed_shell(shell),
-                                       "solid " + std::to_string(solids.size() + 1) + " (sewn from loose faces)"));
+      try {
+        for (const TopoDS_Shell& shell : sew_faces(parts.faces))
+          solids.push_back(checked_solid(solid_from_closed_shell(shell),
+                                         "solid " + std::to_string(solids.size() + 1) + " (sewn from loose faces)"));
+      } catch (const InvalidInput& e) {
+        open_parts.push_back(e.what());
+      }
+    }
+    if (!open_parts.empty()) {
+      if (solids.empty()) throw InvalidInput(open_parts.front());
+      if (skipped) skipped->insert(skipped->end(), open_parts.begin(), open_parts.end());
     }
 
     if (solids.empty()) {

@@ -20,6 +20,9 @@ TopoDS_Shape read_brep_string(const std::string& text);
 /// The solids of a shape, in TopExp_Explorer order. Closed shells that are not yet solids are made
 /// solids; every solid is checked (BRepCheck_Analyzer, closedness, positive volume).
 /// Throws InvalidInput saying which solid, face or edge is wrong, or that there is no solid.
-std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape);
+/// Open shells and faces that stay open after sewing are refused when they are all the shape
+/// holds; beside at least one solid they are construction surfaces: skipped, and described in
+/// `skipped` when given.
+std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped = nullptr);
 
 }  // namespace cadmedial

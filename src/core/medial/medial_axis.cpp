@@ -168,32 +168,51 @@ void complete_corners(const Delaunay& dt, const std::vector<Vertex>& handle, con
   }
 }
 
-// 4.2.5 with the exact solid at hand: a Voronoi vertex is inside when its nearest samples' outward
-// normals all point away from it; where they disagree or it sits close to the surface, the exact
-// B-rep classifier decides.
+// 4.2.5 with the exact solid at hand. A Voronoi vertex x is the centre of an empty ball through
+// its cell's samples p; each sample votes with the side of its face's tangent plane that x lies
+// on (at a sharp edge sample, the two faces' half-spaces: both for convex, either for concave).
+// A vote counts only when x clears the plane by more than the surface can bend away from it
+// within |x - p| (kappa |x - p|^2 / 2). Vertices without two agreeing votes and no dissent go
+// to the exact B-rep classifier.
+int vote(const Samples& samples, int s, const Point3& x) {
+  const Point3 d = sub(x, samples.points[s]);
+  const double r2 = dot(d, d);
+  const double margin = 0.5 * samples.curvature[s] * r2 + 1e-12 * std::sqrt(r2);
+  if (samples.curvature[s] * std::sqrt(r2) > 0.5) return 0;  // the tangent plane says nothing there
+  const SampleTag tag = samples.tag[s];
+  if (tag == SampleTag::Face || tag == SampleTag::Triplet) {
+    const double a = dot(d, samples.normal[s]);
+    return a < -margin ? 1 : a > margin ? -1 : 0;
+  }
+  if ((tag == SampleTag::Edge || tag == SampleTag::Ball) && samples.edge_convex[s] != 0) {
+    const double a1 = dot(d, samples.normal[s]), a2 = dot(d, samples.normal2[s]);
+    const bool in1 = a1 < -margin, in2 = a2 < -margin, out1 = a1 > margin, out2 = a2 > margin;
+    if (samples.edge_convex[s] == 1) return (in1 && in2) ? 1 : (out1 || out2) ? -1 : 0;
+    return (in1 || in2) ? 1 : (out1 && out2) ? -1 : 0;
+  }
+  return 0;
+}
+
 std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const InsideTest& inside,
                                        MedialAxisStats& st) {
   const size_t n = mc.cells.size();
   std::vector<std::uint8_t> label(n, 0);
   std::vector<int> unsure;
+  std::vector<char> used(n, 0);
+  for (int node : mc.nodes)
+    if (node >= 0) used[node] = 1;
+  for (int node : mc.points) used[node] = 1;
   for (size_t id = 0; id < n; ++id) {
-    const Point3& x = mc.centers[id];
-    int votes_in = 0, votes_out = 0;
-    double confidence = 0;
+    if (!used[id]) continue;
+    int in = 0, out = 0;
     for (int j = 0; j < 4; ++j) {
-      const int s = mc.cells[id]->vertex(j)->info();
-      const SampleTag tag = samples.tag[s];
-      if (tag != SampleTag::Face && tag != SampleTag::Triplet) continue;
-      const Point3 d = sub(x, samples.points[s]);
-      const double len = norm(d);
-      if (len <= 0) continue;
-      const double c = dot(d, samples.normal[s]) / len;
-      (c < 0 ? votes_in : votes_out)++;
-      confidence = std::max(confidence, std::abs(c));
+      const int v = vote(samples, mc.cells[id]->vertex(j)->info(), mc.centers[id]);
+      in += v > 0;
+      out += v < 0;
     }
-    if (votes_in > 0 && votes_out == 0 && confidence > 0.5)
+    if (in >= 2 && out == 0)
       label[id] = 1;
-    else if (votes_out > 0 && votes_in == 0 && confidence > 0.5)
+    else if (out >= 2 && in == 0)
       label[id] = 0;
     else
       unsure.push_back(static_cast<int>(id));

@@ -184,6 +184,8 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       ss.vertices = mesh.num_vertices();
       ss.faces = mesh.num_faces();
       ss.dropped_faces = ms.dropped_faces;
+      ss.components = ms.components;
+      ss.exact_inside_tests = ms.exact_inside_tests;
       stats.samples += ss.samples;
       stats.solids.push_back(ss);
       result.mesh.append(mesh);

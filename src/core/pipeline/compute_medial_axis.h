@@ -22,6 +22,8 @@ struct SolidStats {
   std::size_t smooth_edges = 0;
   std::size_t nonconcave_corners = 0;
   std::size_t dropped_faces = 0;   ///< selected faces outside the solid or in stray pieces
+  std::size_t components = 0;      ///< pieces of the inner axis before stray ones were dropped
+  std::size_t exact_inside_tests = 0;  ///< Voronoi vertices the B-rep classifier had to settle
 };
 
 struct ComputeStats {

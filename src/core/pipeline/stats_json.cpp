@@ -67,6 +67,8 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"smooth_edges\": " + std::to_string(s.smooth_edges);
     j += ", \"nonconcave_corners\": " + std::to_string(s.nonconcave_corners);
     j += ", \"dropped_faces\": " + std::to_string(s.dropped_faces);
+    j += ", \"components\": " + std::to_string(s.components);
+    j += ", \"exact_inside_tests\": " + std::to_string(s.exact_inside_tests);
     j += "}";
   }
   j += stats.solids.empty() ? "]\n" : "\n  ]\n";

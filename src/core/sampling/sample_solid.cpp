@@ -77,6 +77,9 @@ class Sampler {
     out_.points.push_back(p);
     out_.tag.push_back(tag);
     out_.normal.push_back({0, 0, 0});
+    out_.normal2.push_back({0, 0, 0});
+    out_.edge_convex.push_back(0);
+    out_.curvature.push_back(0.0f);
     out_.face.push_back(-1);
     out_.edge.push_back(-1);
     out_.vertex.push_back(-1);
@@ -119,6 +122,30 @@ class Sampler {
       out_.nonconcave[id] = f_.nonconcave_corner[v] ? 1 : 0;
       corner_sample_[v] = id;
     }
+  }
+
+  // The two faces' normals and the local character at a sample of a sharp edge: what the inner
+  // axis separation needs to tell inside from outside near it.
+  void describe_edge_sample(int id, int e, double t) {
+    try {
+      const EdgePoint ep = edge_point(f_, e, t);
+      out_.normal[id] = to_point(ep.normal[0]);
+      out_.normal2[id] = to_point(ep.normal[1]);
+      out_.edge_convex[id] = ep.kind == PointKind::Convex ? 1 : ep.kind == PointKind::Concave ? 2 : 0;
+      float k = 0;
+      for (int side = 0; side < 2; ++side) k = std::max(k, static_cast<float>(curvature_at(f_.edge_faces[e][side], ep.uv[side].X(), ep.uv[side].Y())));
+      out_.curvature[id] = k;
+    } catch (const Standard_Failure&) {
+    } catch (const GeometryError&) {
+    }
+  }
+
+  double curvature_at(int fi, double u, double v) {
+    const BRepAdaptor_Surface& surf = surface(fi);
+    if (surf.GetType() == GeomAbs_Plane) return 0.0;
+    BRepLProp_SLProps props(surf, u, v, 2, 1e-9);
+    if (!props.IsCurvatureDefined()) return 0.0;
+    return std::max(std::abs(props.MaxCurvature()), std::abs(props.MinCurvature()));
   }
 
   // The largest spacing along an edge that keeps chords within max_turn_rad of the curve.
@@ -182,6 +209,7 @@ class Sampler {
           const int id = add(to_point(curve.Value(t)), tag, excl);
           out_.edge[id] = e;
           chain.push_back({id, t});
+          if (sharp) describe_edge_sample(id, e, t);
         }
       } catch (const Standard_Failure& err) {
         throw GeometryError("edge " + std::to_string(e + 1) + ": cannot sample: " + err.GetMessageString());
@@ -285,6 +313,7 @@ class Sampler {
           side[k] = add(to_point(q[k]), SampleTag::Triplet);
           out_.face[side[k]] = fi;
           out_.normal[side[k]] = to_point(outward_normal(fi, uv[k].X(), uv[k].Y()));
+          out_.curvature[side[k]] = static_cast<float>(curvature_at(fi, uv[k].X(), uv[k].Y()));
           face_points_[fi].push_back({side[k], {uv[k].X(), uv[k].Y()}});
         }
         Triplet tr;
@@ -372,31 +401,33 @@ class Sampler {
     for (long i = 0; i < nu; ++i) {
       for (long j = 0; j < nvv; ++j) {
         const double u = u0 + du * (i + 0.5 + jitter(rng)), v = v0 + dv * (j + 0.5 + jitter(rng));
-        if (cls.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
         gp_Pnt p;
         gp_Vec su, sv;
         surf.D1(u, v, p, su, sv);
         gp_Vec n = su.Crossed(sv);
         if (n.Magnitude() < 1e-300) continue;  // singular point: the vertex sample covers it
-        double r = sp_.face;
+        double r = sp_.face, k = 0;
         if (!planar) {
           props.SetParameters(u, v);
           if (props.IsCurvatureDefined()) {
-            const double k = std::max(std::abs(props.MaxCurvature()), std::abs(props.MinCurvature()));
+            k = std::max(std::abs(props.MaxCurvature()), std::abs(props.MinCurvature()));
             if (k > 0) r = std::clamp(sp_.max_turn_rad / k, sp_.min_face, sp_.face);
           }
         }
         const Point3 c = to_point(p);
+        // The cheap test first: most candidates fall within reach of a sample already placed.
         const bool crowded = grid_.any_near(c, std::max(r, sp_.edge), [&](int id) {
           const double ex = std::max(r, exclusion_[id]);
           return distance2(out_.points[id], c) < ex * ex;
         });
         if (crowded) continue;
+        if (cls.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
         n.Normalize();
         if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
         const int id = add(c, SampleTag::Face);
         out_.face[id] = fi;
         out_.normal[id] = to_point(n);
+        out_.curvature[id] = static_cast<float>(k);
         face_points_[fi].push_back({id, {u, v}});
       }
     }

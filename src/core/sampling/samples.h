@@ -36,7 +36,11 @@ struct FaceDomain {
 struct Samples {
   std::vector<Point3> points;
   std::vector<SampleTag> tag;
-  std::vector<Point3> normal;      ///< outward unit normal on Face/Triplet samples, zero elsewhere
+  std::vector<Point3> normal;      ///< outward unit normal on Face/Triplet samples and of the first
+                                   ///< face on samples of sharp edges; zero elsewhere
+  std::vector<Point3> normal2;     ///< on samples of sharp edges: the second face's normal
+  std::vector<std::uint8_t> edge_convex;  ///< on samples of sharp edges: 1 convex, 2 concave here
+  std::vector<float> curvature;    ///< largest principal curvature of the face(s) at the sample
   std::vector<int> face;           ///< face of Face/Triplet samples, -1 elsewhere
   std::vector<int> edge;           ///< edge of Edge/Ball samples, -1 elsewhere
   std::vector<int> vertex;         ///< vertex of Corner samples, -1 elsewhere

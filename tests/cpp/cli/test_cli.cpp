@@ -11,6 +11,7 @@
 #include <TopoDS_Shell.hxx>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 
@@ -182,9 +183,9 @@ TEST(Cli, InfoDescribesTheSolid) {
   EXPECT_NE(r.out.find("sampling plan: spacing"), std::string::npos) << r.out;
 }
 
-// The medial axis of the unit cube lies inside the cube, and no point of it is farther than 1/2
-// from the boundary (up to the sample spacing, since radii are distances to samples). Vertices on
-// the convex edges (4.2.2) are boundary samples: their radius is 0.
+// The medial axis of the unit cube lies inside the cube; no point of it is farther than 1/2 from the
+// boundary (up to the sample spacing, since radii are distances to samples), its centre is at 1/2,
+// and it reaches the convex edges, where the radius is 0.
 TEST(Cli, ComputeWritesAMeshInsideTheCubeAndValidStats) {
   TempDir dir;
   const std::string input = box_brep(dir), output = dir.file("cube.ply"), stats = dir.file("cube.json");
@@ -195,14 +196,20 @@ TEST(Cli, ComputeWritesAMeshInsideTheCubeAndValidStats) {
   const MedialMesh m = read_medial_mesh(output);
   ASSERT_GT(m.num_faces(), 0u);
   const double slack = 0.1;  // > spacing: sqrt(6 / 1500) ~ 0.063
+  double max_radius = 0.0;
   for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    int on_faces = 0;  // coordinates at 0 or 1: two or more for a point on an edge of the cube
     for (double c : m.vertices[v]) {
       EXPECT_GE(c, -slack);
       EXPECT_LE(c, 1.0 + slack);
+      on_faces += std::abs(c) < 1e-9 || std::abs(c - 1.0) < 1e-9;
     }
     EXPECT_GE(m.radius[v], 0.0);
     EXPECT_LE(m.radius[v], 0.5 + slack);
+    if (m.radius[v] == 0.0) EXPECT_GE(on_faces, 2) << "radius 0 off the cube's edges at vertex " << v;
+    max_radius = std::max(max_radius, m.radius[v]);
   }
+  EXPECT_GT(max_radius, 0.5 - slack);
   const std::string json = test::read_file(stats);
   EXPECT_EQ(json.rfind("{", 0), 0u);
   EXPECT_NE(json.find("\"timings\""), std::string::npos);

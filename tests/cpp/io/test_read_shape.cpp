@@ -4,6 +4,7 @@
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
 #include <gp_Pln.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
@@ -245,6 +246,27 @@ TEST(ExtractSolids, InsideOutSolidIsReversed) {
   const auto solids = extract_solids(box().Reversed());
   ASSERT_EQ(solids.size(), 1u);
   EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+}
+
+TEST(ExtractSolids, SolidWithInwardFacesIsReversed) {
+  // MakeSolid keeps the shell as given: reversed, its faces point inward and the volume is negative.
+  const TopoDS_Solid inward = BRepBuilderAPI_MakeSolid(TopoDS::Shell(box_shell().Reversed())).Solid();
+  ASSERT_LT(volume(inward), 0.0);
+  const auto solids = extract_solids(inward);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+}
+
+TEST(ExtractSolids, FlatPillowHasZeroVolumeAndIsRefused) {
+  // A square face and the same face reversed: every edge has two sides, but nothing is enclosed.
+  const TopoDS_Face square = BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 0, 1, 0, 1).Face();
+  BRep_Builder b;
+  TopoDS_Shell shell;
+  b.MakeShell(shell);
+  b.Add(shell, square);
+  b.Add(shell, square.Reversed());
+  const TopoDS_Solid pillow = BRepBuilderAPI_MakeSolid(shell).Solid();
+  EXPECT_CONTAINS(refusal([&] { extract_solids(pillow); }), "solid 1: has zero volume");
 }
 
 TEST(ExtractSolids, SeamsAndPolesAreNotOpenEdges) {
