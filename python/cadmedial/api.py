@@ -1,0 +1,85 @@
+"""The public entry points: compute, plan_sampling, load, read_shape."""
+
+import json
+import os
+from typing import NamedTuple
+
+from . import _core
+from .result import MedialAxisResult
+
+
+class SamplingPlan(NamedTuple):
+    """The sample spacing that the parameters give for a shape, and about how many samples."""
+    spacing: float
+    estimated_samples: int
+
+
+def _is_brep_text(text):
+    # Shape.exportBrepToString() starts with a blank line, then this header; DBRep's with its own.
+    head = text.lstrip()[:64]
+    return head.startswith("CASCADE Topology") or head.startswith("DBRep_DrawableShape")
+
+
+def read_shape(source):
+    """The shape of ``source`` as a ``cadmedial._core.Shape``.
+
+    ``source`` is a path (str or os.PathLike) to a STEP, IGES or BREP file, BREP text (str),
+    an object with ``exportBrepToString()`` (a FreeCAD ``Part.Shape``), or a ``_core.Shape``.
+    Raises InvalidInput when the file or text cannot be read.
+    """
+    if isinstance(source, _core.Shape):
+        return source
+    if hasattr(source, "exportBrepToString"):
+        return _core.read_brep_string(source.exportBrepToString())
+    if isinstance(source, os.PathLike):
+        return _core.read_shape_file(os.fspath(source))
+    if isinstance(source, bytes):
+        source = source.decode("utf-8", errors="replace")
+    if not isinstance(source, str):
+        raise TypeError("source must be a file path, BREP text or a shape, got "
+                        + type(source).__name__)
+    if _is_brep_text(source):
+        return _core.read_brep_string(source)
+    return _core.read_shape_file(source)
+
+
+def _density(spacing, samples):
+    # None means "not given"; the engine takes 0 for that.
+    if samples is not None and (isinstance(samples, bool) or int(samples) != samples):
+        raise _core.InvalidInput("samples must be a whole number, got %r" % (samples,))
+    return (0.0 if spacing is None else float(spacing),
+            0 if samples is None else int(samples))
+
+
+def plan_sampling(source, spacing=None, samples=None):
+    """SamplingPlan(spacing, estimated_samples) for ``source`` (see read_shape) and the density
+    parameters, without computing anything else: fast enough for a live preview."""
+    spacing, samples = _density(spacing, samples)
+    return SamplingPlan(*_core.plan_sampling(read_shape(source), spacing, samples))
+
+
+def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=None):
+    """The inner medial axis of every solid of ``source``.
+
+    source    a STEP/IGES/BREP file path, BREP text, a FreeCAD Part.Shape or a _core.Shape
+    spacing   sample spacing in model units; None derives it from ``samples``
+    samples   approximate total number of boundary samples; None with no spacing = 20000
+    theta     Angle condition threshold in degrees, in (0, 90) (section 3 of the paper)
+    rho       Ratio condition threshold, > 0
+    progress  None or callable(stage: str, fraction: float); returning False (any falsy value
+              but None) cancels and raises Cancelled; an exception it raises cancels the work
+              and propagates unchanged. It is called with the GIL held.
+
+    Returns a MedialAxisResult. Raises InvalidInput (bad file, shape or parameter; also a
+    ValueError), GeometryError (a stage failed; also a RuntimeError) or Cancelled.
+    """
+    shape = read_shape(source)
+    spacing, samples = _density(spacing, samples)
+    mesh, stats = _core.compute_medial_axis(shape, spacing, samples, float(theta), float(rho),
+                                            progress)
+    return MedialAxisResult(mesh, json.loads(stats))
+
+
+def load(path):
+    """A MedialAxisResult read from a .ply, .obj or .ma file (stats are empty)."""
+    return MedialAxisResult(_core.read_medial_mesh(os.fspath(path)), {})

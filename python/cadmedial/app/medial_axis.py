@@ -1,0 +1,235 @@
+"""The MedialAxis document object: a parametric Mesh::FeaturePython that holds the medial axis of
+its Source, coloured by medial radius.
+
+Saved inside .FCStd files, keep them: module ``cadmedial.app.medial_axis``, class ``MedialAxis``,
+object type ``Mesh::FeaturePython``, property names below.
+
+What the document keeps (so reopening needs no recompute):
+  Mesh          the polygons fanned into triangles (all of them: non-manifold junctions too);
+                points in the engine's vertex order
+  RadiusColors  one colour per point (the view provider's per-vertex colouring)
+  ResultFile    the engine's own mesh as binary PLY (polygons, radius, kind, solid) for export
+                and for the Part shape
+"""
+
+import os
+import shutil
+import tempfile
+import time
+
+import FreeCAD as App
+import Mesh
+import Part
+
+import cadmedial
+from cadmedial.colormap import colors_of
+
+from .registry import attach_view_provider
+
+INPUTS = "Medial Axis"
+OUTPUTS = "Result"
+READ_ONLY, HIDDEN = 1, 2
+
+
+class MedialAxis:
+    """Proxy of the MedialAxis feature. Its execute() computes; a failure is reported in the
+    report view and in Status, and the last good result stays."""
+
+    Type = "MedialAxis"
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self._init_transient()
+        add = obj.addProperty
+        add("App::PropertyLink", "Source", INPUTS, "The solid (or shape of solids) to compute the medial axis of")
+        add("App::PropertyLength", "Spacing", INPUTS, "Boundary sample spacing; 0 derives it from Samples")
+        add("App::PropertyInteger", "Samples", INPUTS,
+            "Approximate number of boundary samples, used when Spacing is 0; 0 means 20000")
+        add("App::PropertyFloat", "Theta", INPUTS, "Angle condition threshold in degrees, in (0, 90)")
+        add("App::PropertyFloat", "Rho", INPUTS, "Ratio condition threshold, > 0")
+        obj.Theta = 5.0
+        obj.Rho = 8.0
+        for kind, name, doc in [
+                ("App::PropertyInteger", "SampleCount", "Number of boundary samples used"),
+                ("App::PropertyInteger", "VertexCount", "Vertices of the medial mesh"),
+                ("App::PropertyInteger", "FaceCount", "Polygons of the medial mesh"),
+                ("App::PropertyLength", "SpacingUsed", "Sample spacing used"),
+                ("App::PropertyLength", "RadiusMin", "Smallest medial radius"),
+                ("App::PropertyLength", "RadiusMax", "Largest medial radius"),
+                ("App::PropertyFloat", "ComputeTime", "Seconds of the last compute"),
+                ("App::PropertyStringList", "Timings", "Seconds per stage of the last compute"),
+                ("App::PropertyString", "Status", "'ok', or why the last compute failed")]:
+            add(kind, name, OUTPUTS, doc)
+            obj.setEditorMode(name, READ_ONLY)
+        add("App::PropertyColorList", "RadiusColors", OUTPUTS, "Colour of each mesh point by medial radius")
+        add("App::PropertyFileIncluded", "ResultFile", OUTPUTS, "The medial mesh as binary PLY")
+        obj.setEditorMode("RadiusColors", HIDDEN)
+        obj.setEditorMode("ResultFile", HIDDEN)
+
+    def _init_transient(self):
+        self.result = None   # the last MedialAxisResult, in memory only
+        self.pending = None  # (parameters, result) computed before the object existed
+
+    # Saved state: the type only; the result lives in the document's properties.
+    def __getstate__(self):
+        return {"Type": self.Type}
+
+    def __setstate__(self, state):
+        self._init_transient()
+
+    dumps, loads = __getstate__, __setstate__  # the names FreeCAD 0.21+ looks for
+
+    def onDocumentRestored(self, obj):
+        self._init_transient()
+
+    def execute(self, obj):
+        started = time.perf_counter()
+        try:
+            result = self._take_pending(obj) or compute_for(obj)
+        except Exception as error:  # any failure: report it, keep the last good result
+            obj.Status = "failed: %s" % error
+            App.Console.PrintError("%s: medial axis not updated: %s\n" % (obj.Label, error))
+            return
+        self.result = result
+        store_result(obj, result)
+        # The engine's total: a result computed before the object existed took no time here.
+        total = result.stats.get("timings", {}).get("total")
+        obj.ComputeTime = float(total) if total is not None else time.perf_counter() - started
+        obj.Status = "ok"
+
+    def _take_pending(self, obj):
+        pending, self.pending = self.pending, None
+        if pending is not None and pending[0] == parameters_of(obj):
+            return pending[1]
+        return None
+
+
+def parameters_of(obj):
+    """What compute_for(obj) depends on besides the source's shape."""
+    return (obj.Source.Name if obj.Source else None, float(obj.Spacing.Value), int(obj.Samples),
+            float(obj.Theta), float(obj.Rho))
+
+
+def compute_for(obj):
+    """Runs the engine on obj's Source with obj's parameters; raises on failure."""
+    if obj.Source is None:
+        raise cadmedial.InvalidInput("no Source: link a solid")
+    return compute_shape(Part.getShape(obj.Source), obj.Spacing.Value, obj.Samples, obj.Theta,
+                         obj.Rho, obj.Label)
+
+
+def compute_shape(shape, spacing, samples, theta, rho, label):
+    """cadmedial.compute on a Part.Shape, with FreeCAD's progress bar (Esc cancels) in the GUI."""
+    if shape.isNull():
+        raise cadmedial.InvalidInput("the source has no shape (recompute it first?)")
+    spacing = spacing if spacing > 0 else None
+    samples = samples if (spacing is None and samples > 0) else None
+    if not App.GuiUp:
+        return cadmedial.compute(shape, spacing=spacing, samples=samples, theta=theta, rho=rho)
+    with StatusBarProgress("Medial axis of %s" % label) as progress:
+        return cadmedial.compute(shape, spacing=spacing, samples=samples, theta=theta, rho=rho,
+                                 progress=progress)
+
+
+class StatusBarProgress:
+    """FreeCAD's own progress indicator as a compute() callback: keeps the GUI drawn during a
+    recompute, and Esc cancels (ProgressIndicator.next raises, which cancels the engine)."""
+
+    def __init__(self, text):
+        self.text = text
+        self.indicator = App.Base.ProgressIndicator()
+        self.last = 0.0
+
+    def __enter__(self):
+        self.indicator.start(self.text, 0)
+        return self
+
+    def __call__(self, stage, fraction):
+        now = time.monotonic()
+        if now - self.last > 0.05:  # the engine may report far more often than we can draw
+            self.last = now
+            self.indicator.next(True)
+        return True
+
+    def __exit__(self, *exc):
+        self.indicator.stop()
+        return False
+
+
+def store_result(obj, result):
+    """Puts a MedialAxisResult into obj's Mesh, colours, counts and ResultFile."""
+    triangles = result.triangles()
+    points = [App.Vector(*p) for p in result.vertices.tolist()]
+    mesh = Mesh.Mesh()
+    # False: no manifold check. The medial surface is non-manifold where sheets meet, and the
+    # check (also done by Mesh.Mesh((points, facets))) would delete every facet at a junction.
+    mesh.addFacets((points, [tuple(t) for t in triangles.tolist()]), False)
+    obj.Mesh = mesh
+    if result.num_vertices:
+        low, high = float(result.radius.min()), float(result.radius.max())
+    else:
+        low = high = 0.0
+    obj.RadiusMin, obj.RadiusMax = low, high
+    obj.RadiusColors = [tuple(c) for c in colors_of(result.radius, low, high).tolist()]
+    stats = result.stats
+    obj.SampleCount = int(stats.get("samples", 0))
+    obj.SpacingUsed = float(stats.get("spacing", 0.0))
+    obj.VertexCount = result.num_vertices
+    obj.FaceCount = result.num_faces
+    obj.Timings = ["%s: %.3f s" % (stage, seconds)
+                   for stage, seconds in stats.get("timings", {}).items()]
+    folder = tempfile.mkdtemp(prefix="cadmedial-")
+    try:
+        path = os.path.join(folder, "medial_axis.ply")
+        result.save(path)
+        obj.ResultFile = path  # FreeCAD copies it into the document's own folder
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def medial_result(obj):
+    """The MedialAxisResult of a MedialAxis object: in memory after a compute, else read from
+    its ResultFile (after reopening a document). Raises cadmedial.InvalidInput when there is none."""
+    proxy = obj.Proxy
+    if proxy.result is None:
+        if not obj.ResultFile or not os.path.isfile(obj.ResultFile):
+            raise cadmedial.InvalidInput("%s has no result yet: recompute it" % obj.Label)
+        proxy.result = cadmedial.load(obj.ResultFile)
+    return proxy.result
+
+
+def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, shape=False,
+                     result=None, name="MedialAxis"):
+    """Adds a MedialAxis feature for ``source`` (a document object with a solid shape) and
+    computes it; with shape=True also a MedialShape (Part feature of planar faces).
+
+    spacing/samples/theta/rho as in cadmedial.compute. ``result``: a MedialAxisResult already
+    computed with these parameters (the task panel computes in a thread first).
+    Returns the new object. When the compute fails, the error goes to the report view and is
+    raised, and the document is left as it was: no object is added.
+    """
+    doc = source.Document
+    if "Touched" in source.State or "Invalid" in source.State:
+        source.recompute()
+    if result is None:
+        try:
+            result = compute_shape(Part.getShape(source), spacing or 0.0, samples or 0,
+                                   theta, rho, source.Label)
+        except Exception as error:
+            App.Console.PrintError("Medial axis of %s: %s\n" % (source.Label, error))
+            raise
+    obj = doc.addObject("Mesh::FeaturePython", name)
+    proxy = MedialAxis(obj)
+    obj.Label = "%s medial axis" % source.Label
+    obj.Source = source
+    obj.Spacing = spacing or 0.0
+    obj.Samples = 0 if spacing else int(samples or 0)
+    obj.Theta = theta
+    obj.Rho = rho
+    proxy.pending = (parameters_of(obj), result)
+    attach_view_provider(obj, MedialAxis.Type)
+    doc.recompute([obj])  # unlike obj.recompute(), this also clears the object's Touched flag
+    if shape:
+        from .medial_shape import make_medial_shape  # here: medial_shape imports this module
+        make_medial_shape(obj)
+    return obj

@@ -1,0 +1,17 @@
+"""The workbench GUI: commands, task panel, view provider, radius legend. Imports FreeCADGui.
+
+Importing this package registers the commands (MedialAxis_Create, MedialAxis_Export,
+MedialAxis_MakeShape) and plugs the view providers into cadmedial.app, so that
+cadmedial.app.make_medial_axis() in the Python console gets the coloured view too.
+"""
+
+from cadmedial.app import view_provider_factories
+
+from . import commands
+from .view_provider import ViewProviderMedialAxis, ViewProviderMedialShape
+
+view_provider_factories["MedialAxis"] = ViewProviderMedialAxis
+view_provider_factories["MedialShape"] = ViewProviderMedialShape
+commands.register()
+
+__all__ = ["ViewProviderMedialAxis", "ViewProviderMedialShape", "commands"]

@@ -1,0 +1,117 @@
+"""The radius legend: a small panel over each 3D view of a document that shows the colour map
+and the radius range of every visible MedialAxis object in it."""
+
+import FreeCADGui as Gui
+from PySide2 import QtCore, QtGui, QtWidgets
+
+from cadmedial.app import is_medial_axis
+from cadmedial.colormap import STOPS
+
+OBJECT_NAME = "cadmedial_radius_legend"
+
+
+class RadiusLegend(QtWidgets.QFrame):
+    """A vertical viridis bar, small radius at the bottom, with one line per object:
+    "<label>: <min> – <max> mm". Keeps itself in the bottom-right corner of its parent."""
+
+    BAR_WIDTH, BAR_HEIGHT, MARGIN = 16, 120, 12
+
+    def __init__(self, parent):
+        super().__init__(parent)
+        self.setObjectName(OBJECT_NAME)
+        self.setAttribute(QtCore.Qt.WA_TransparentForMouseEvents)
+        self.setStyleSheet("#%s { background: rgba(255, 255, 255, 215); border-radius: 6px; }"
+                           " QLabel { color: #202020; }" % OBJECT_NAME)
+        self.bar = QtWidgets.QLabel(self)
+        self.bar.setFixedSize(self.BAR_WIDTH, self.BAR_HEIGHT)
+        self.bar.setPixmap(self._bar_pixmap())
+        self.title = QtWidgets.QLabel("<b>Medial radius</b>", self)
+        self.high = QtWidgets.QLabel(self)
+        self.low = QtWidgets.QLabel(self)
+        self.lines = QtWidgets.QLabel(self)
+        text = QtWidgets.QVBoxLayout()
+        text.addWidget(self.title)
+        text.addWidget(self.high)
+        text.addStretch(1)
+        text.addWidget(self.lines)
+        text.addStretch(1)
+        text.addWidget(self.low)
+        layout = QtWidgets.QHBoxLayout(self)
+        layout.setContentsMargins(8, 8, 8, 8)
+        layout.addWidget(self.bar)
+        layout.addLayout(text)
+        parent.installEventFilter(self)
+
+    def _bar_pixmap(self):
+        gradient = QtGui.QLinearGradient(0, self.BAR_HEIGHT, 0, 0)
+        for i, (r, g, b) in enumerate(STOPS):
+            gradient.setColorAt(i / (len(STOPS) - 1), QtGui.QColor.fromRgbF(r, g, b))
+        pixmap = QtGui.QPixmap(self.BAR_WIDTH, self.BAR_HEIGHT)
+        painter = QtGui.QPainter(pixmap)
+        painter.fillRect(pixmap.rect(), QtGui.QBrush(gradient))
+        painter.end()
+        return pixmap
+
+    def set_entries(self, entries):
+        """entries: list of (label, low, high); the bar spans each object's own range."""
+        if not entries:
+            self.hide()
+            return
+        self.high.setText("max" if len(entries) > 1 else "%.4g mm" % entries[0][2])
+        self.low.setText("min" if len(entries) > 1 else "%.4g mm" % entries[0][1])
+        self.lines.setText("<br>".join("%s: %.4g – %.4g mm" % entry for entry in entries))
+        self.adjustSize()
+        self._place()
+        self.show()
+        self.raise_()
+
+    def text(self):
+        """What the legend says, for tests."""
+        return " ".join(label.text() for label in (self.title, self.high, self.lines, self.low))
+
+    def _place(self):
+        parent = self.parentWidget()
+        self.move(parent.width() - self.width() - self.MARGIN,
+                  parent.height() - self.height() - self.MARGIN)
+
+    def eventFilter(self, watched, event):
+        if event.type() == QtCore.QEvent.Resize:
+            self._place()
+        return False
+
+
+def _view_widgets(doc):
+    gui_doc = Gui.getDocument(doc.Name) if doc is not None else None
+    if gui_doc is None:
+        return []
+    widgets = []
+    for view in gui_doc.mdiViewsOfType("Gui::View3DInventor"):
+        try:
+            widgets.append(view.graphicsView())
+        except Exception:  # a view that is being closed
+            continue
+    return widgets
+
+
+def legend_of(widget):
+    """The legend on a 3D view's graphics widget, or None."""
+    return widget.findChild(QtWidgets.QFrame, OBJECT_NAME)
+
+
+def refresh(doc, leaving=None):
+    """Shows the ranges of the visible MedialAxis objects of doc (but `leaving`, being deleted)
+    in a legend over each of its 3D views; hides the legend when there is none."""
+    entries = []
+    for obj in doc.Objects if doc is not None else []:
+        if obj is leaving or not is_medial_axis(obj) or not obj.VertexCount:
+            continue
+        if obj.ViewObject is None or not obj.ViewObject.Visibility:
+            continue
+        entries.append((obj.Label, obj.RadiusMin.Value, obj.RadiusMax.Value))
+    for widget in _view_widgets(doc):
+        legend = legend_of(widget)
+        if legend is None:
+            if not entries:
+                continue
+            legend = RadiusLegend(widget)
+        legend.set_entries(entries)

@@ -1,0 +1,59 @@
+"""Computing medial axes in a background thread, so the GUI stays live and can cancel.
+
+No Qt here: the task panel polls ``progress`` from a timer. The engine releases the GIL while it
+works; its progress callback only records where it is and says whether to go on.
+"""
+
+import threading
+
+import cadmedial
+
+
+class ComputeJob:
+    """Computes ``cadmedial.compute(shape, **params)`` for each shape in turn, in a thread.
+
+    shapes  list of cadmedial._core.Shape (read in the GUI thread beforehand)
+    params  keyword arguments of cadmedial.compute (spacing, samples, theta, rho)
+    After ``done``: ``results`` (one MedialAxisResult per shape) when all succeeded, else
+    ``error`` (the exception; a cadmedial.Cancelled after cancel()).
+    """
+
+    def __init__(self, shapes, params):
+        self.shapes = list(shapes)
+        self.params = dict(params)
+        self.results = []
+        self.error = None
+        self.progress = (0, "", 0.0)  # (index of the shape, stage, fraction of the stage)
+        self._cancel = threading.Event()
+        self._thread = threading.Thread(target=self._run, name="cadmedial-compute", daemon=True)
+
+    def start(self):
+        self._thread.start()
+
+    def cancel(self):
+        self._cancel.set()
+
+    @property
+    def done(self):
+        return self._thread.ident is not None and not self._thread.is_alive()
+
+    @property
+    def overall_fraction(self):
+        index, _stage, fraction = self.progress
+        return min(1.0, (index + fraction) / max(1, len(self.shapes)))
+
+    def wait(self, timeout=None):
+        self._thread.join(timeout)
+
+    def _run(self):
+        try:
+            for index, shape in enumerate(self.shapes):
+                def report(stage, fraction, index=index):
+                    self.progress = (index, stage, fraction)
+                    return not self._cancel.is_set()
+                if self._cancel.is_set():
+                    raise cadmedial.Cancelled()
+                self.results.append(cadmedial.compute(shape, progress=report, **self.params))
+        except Exception as error:  # handed to the GUI thread, which reports it
+            self.error = error
+            self.results = []

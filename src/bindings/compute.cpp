@@ -1,0 +1,168 @@
+// Shapes, parameters and the pipeline. Long calls release the GIL; the progress callback takes it
+// back to call Python. A Python exception raised in the callback cancels the engine and is then
+// raised again, unchanged, to the caller.
+#include <pybind11/stl.h>
+
+#include <TopAbs_ShapeEnum.hxx>
+#include <TopoDS_Shape.hxx>
+
+#include <exception>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.h"
+#include "core/errors.h"
+#include "core/io/read_shape.h"
+#include "core/pipeline/compute_medial_axis.h"
+#include "core/progress.h"
+#include "core/types.h"
+
+namespace py = pybind11;
+
+namespace cadmedial::bindings {
+namespace {
+
+const char* shape_type_name(const TopoDS_Shape& shape) {
+  if (shape.IsNull()) return "null";
+  switch (shape.ShapeType()) {
+    case TopAbs_COMPOUND: return "compound";
+    case TopAbs_COMPSOLID: return "compsolid";
+    case TopAbs_SOLID: return "solid";
+    case TopAbs_SHELL: return "shell";
+    case TopAbs_FACE: return "face";
+    case TopAbs_WIRE: return "wire";
+    case TopAbs_EDGE: return "edge";
+    case TopAbs_VERTEX: return "vertex";
+    default: return "shape";
+  }
+}
+
+ComputeParams make_params(double spacing, long long samples, double theta, double rho) {
+  // size_t would turn -1 into a huge count; say what is wrong instead.
+  if (samples < 0) throw InvalidInput("samples must be >= 0, got " + std::to_string(samples));
+  ComputeParams params;
+  params.sampling.spacing = spacing;
+  params.sampling.target_samples = static_cast<std::size_t>(samples);
+  params.medial.theta_deg = theta;
+  params.medial.rho = rho;
+  return params;
+}
+
+// Runs the pipeline without the GIL. `callback` is None or callable(stage: str, fraction: float)
+// returning a falsy value other than None to cancel.
+ComputeResult compute_with_callback(const TopoDS_Shape& shape, const ComputeParams& params,
+                                    const py::object& callback) {
+  std::exception_ptr python_error;  // written with the GIL held
+  Progress progress = [&](const std::string& stage, double fraction) -> bool {
+    py::gil_scoped_acquire gil;
+    if (python_error) return false;  // another thread of the engine already failed
+    try {
+      // Ctrl-C in a console (main thread only) cancels too.
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      if (callback.is_none()) return true;
+      py::object answer = callback(stage, fraction);
+      if (answer.is_none()) return true;
+      int truth = PyObject_IsTrue(answer.ptr());
+      if (truth < 0) throw py::error_already_set();
+      return truth != 0;
+    } catch (...) {
+      python_error = std::current_exception();
+      return false;
+    }
+  };
+
+  ComputeResult result;
+  try {
+    py::gil_scoped_release release;
+    result = compute_medial_axis(shape, params, progress);
+  } catch (...) {
+    // The engine reports the cancel we asked for as Cancelled (or fails on the way out): the
+    // caller wants the Python exception that caused it.
+    if (python_error) std::rethrow_exception(python_error);
+    throw;
+  }
+  if (python_error) std::rethrow_exception(python_error);
+  return result;
+}
+
+}  // namespace
+
+void bind_compute(py::module_& m) {
+  py::class_<TopoDS_Shape>(m, "Shape", "An OpenCASCADE shape, read by read_shape_file or read_brep_string.")
+      .def_property_readonly("shape_type", &shape_type_name,
+                             "compound, compsolid, solid, shell, face, wire, edge, vertex or null")
+      .def("__repr__", [](const TopoDS_Shape& shape) {
+        return std::string("<cadmedial._core.Shape ") + shape_type_name(shape) + ">";
+      });
+
+  m.def(
+      "read_shape_file",
+      [](const std::string& path) {
+        py::gil_scoped_release release;
+        return read_shape_file(path);
+      },
+      py::arg("path"), "Reads a STEP, IGES or BREP file (by extension); raises InvalidInput.");
+
+  m.def(
+      "read_brep_string",
+      [](const std::string& text) {
+        py::gil_scoped_release release;
+        return read_brep_string(text);
+      },
+      py::arg("text"), "Reads OpenCASCADE BREP text (FreeCAD's Shape.exportBrepToString()).");
+
+  m.def(
+      "extract_solids",
+      [](const TopoDS_Shape& shape) {
+        std::vector<TopoDS_Solid> solids;
+        {
+          py::gil_scoped_release release;
+          solids = extract_solids(shape);
+        }
+        return std::vector<TopoDS_Shape>(solids.begin(), solids.end());
+      },
+      py::arg("shape"), "The checked, closed solids of a shape; raises InvalidInput when there is none.");
+
+  m.def(
+      "check_params",
+      [](double spacing, long long samples, double theta, double rho) {
+        check_params(make_params(spacing, samples, theta, rho));
+      },
+      py::arg("spacing") = 0.0, py::arg("samples") = 0, py::arg("theta") = 5.0, py::arg("rho") = 8.0,
+      "Raises InvalidInput naming the first bad parameter (0 spacing / samples means derive).");
+
+  m.def(
+      "plan_sampling",
+      [](const TopoDS_Shape& shape, double spacing, long long samples) {
+        ComputeParams params = make_params(spacing, samples, 5.0, 8.0);
+        SamplingPlan plan;
+        {
+          py::gil_scoped_release release;
+          plan = plan_sampling(shape, params.sampling);
+        }
+        return std::make_pair(plan.spacing, plan.estimated_samples);
+      },
+      py::arg("shape"), py::arg("spacing") = 0.0, py::arg("samples") = 0,
+      "(spacing, estimated number of samples) that these parameters give for the shape.");
+
+  m.def(
+      "compute_medial_axis",
+      [](const TopoDS_Shape& shape, double spacing, long long samples, double theta, double rho,
+         const py::object& progress) {
+        if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+          throw py::type_error("progress must be callable(stage, fraction) or None");
+        ComputeResult result = compute_with_callback(shape, make_params(spacing, samples, theta, rho), progress);
+        std::string stats = stats_to_json(result.stats);
+        return std::make_pair(std::move(result.mesh), std::move(stats));
+      },
+      py::arg("shape"), py::arg("spacing") = 0.0, py::arg("samples") = 0, py::arg("theta") = 5.0,
+      py::arg("rho") = 8.0, py::arg("progress") = py::none(),
+      "Inner medial axis of every solid of the shape: (MedialMesh, stats as JSON text).\n"
+      "progress(stage, fraction) is called with the GIL held; returning a falsy value other than "
+      "None raises Cancelled, and an exception it raises cancels the work and propagates.");
+
+  m.def("peak_rss_mb", &peak_rss_mb, "Peak resident set size of this process so far, MiB.");
+}
+
+}  // namespace cadmedial::bindings

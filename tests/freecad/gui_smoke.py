@@ -1,0 +1,207 @@
+# Runs inside the FreeCAD GUI (`freecad gui_smoke.py`, under Xvfb; see test_gui.py): uses the
+# Medial Axis workbench as a person would and writes what it saw to $CADMEDIAL_GUI_OUT/report.json,
+# plus screenshots. Exits FreeCAD itself with os._exit (status 0 = the script ran to its end).
+import json
+import os
+import time
+import traceback
+
+import FreeCAD as App
+import FreeCADGui as Gui
+from PySide2 import QtCore, QtGui, QtWidgets
+
+OUT = os.environ["CADMEDIAL_GUI_OUT"]
+report = {"steps": []}
+
+
+def finish(code):
+    with open(os.path.join(OUT, "report.json"), "w") as f:
+        json.dump(report, f, indent=1)
+    os._exit(code)
+
+
+def wait_until(condition, seconds, what):
+    end = time.monotonic() + seconds
+    while not condition():
+        if time.monotonic() > end:
+            raise TimeoutError("waited %.0f s for %s" % (seconds, what))
+        QtWidgets.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
+        time.sleep(0.02)
+
+
+def settle(seconds=0.5):
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        QtWidgets.QApplication.processEvents(QtCore.QEventLoop.AllEvents, 50)
+        time.sleep(0.02)
+
+
+def report_view_text():
+    for widget in QtWidgets.QApplication.allWidgets():
+        if widget.objectName() == "Report view" and hasattr(widget, "toPlainText"):
+            return widget.toPlainText()
+    return ""
+
+
+def run():
+    mw = Gui.getMainWindow()
+    mw.setGeometry(QtGui.QGuiApplication.primaryScreen().availableGeometry())
+    mdi = mw.findChild(QtWidgets.QMdiArea)
+    mdi.closeAllSubWindows()  # the Start page
+    Gui.activateWorkbench("MedialAxisWorkbench")
+    report["workbench"] = Gui.activeWorkbench().name()
+    doc = App.newDocument("Smoke")
+    box = doc.addObject("Part::Box", "Box")
+    box.Length, box.Width, box.Height = 40.0, 20.0, 10.0
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    report["create_active_without_selection"] = Gui.Command.get("MedialAxis_Create").isActive()
+    Gui.Selection.addSelection(box)
+    settle(0.3)
+    report["create_active_with_box"] = Gui.Command.get("MedialAxis_Create").isActive()
+    report["steps"].append("selected")
+
+    Gui.runCommand("MedialAxis_Create")
+    settle(0.5)
+    from cadmedial.gui import task_panel
+    panel = task_panel.active_panel
+    report["task_dialog_open"] = Gui.Control.activeDialog()
+    report["preview_default"] = panel.preview.text()
+    panel.samples.setValue(4000)
+    settle(0.2)
+    report["preview_4000"] = panel.preview.text()
+    panel.make_shape.setChecked(True)
+    panel.accept()
+    report["stop_enabled_while_running"] = panel.stop.isEnabled()
+    wait_until(lambda: task_panel.active_panel is None, 300, "the task panel to finish")
+    report["steps"].append("computed")
+    settle(1.0)
+
+    feature = doc.getObject("MedialAxis")
+    vobj = feature.ViewObject
+    report["feature"] = {
+        "status": feature.Status, "points": feature.Mesh.CountPoints,
+        "facets": feature.Mesh.CountFacets, "vertex_count": feature.VertexCount,
+        "colors": len(feature.RadiusColors), "coloring": vobj.Coloring,
+        "samples": feature.Samples, "radius": [feature.RadiusMin.Value, feature.RadiusMax.Value],
+        "proxy": type(vobj.Proxy).__module__ + "." + type(vobj.Proxy).__name__,
+        "source_display": box.ViewObject.DisplayMode}
+    shape = doc.getObject("MedialShape")
+    report["shape_faces"] = len(shape.Shape.Faces) if shape else None
+
+    from cadmedial.gui import legend
+    view = Gui.ActiveDocument.ActiveView
+    widget = view.graphicsView()
+    shown = legend.legend_of(widget)
+    report["legend"] = shown.text() if shown is not None and shown.isVisible() else None
+
+    Gui.Selection.clearSelection()
+    view.viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    settle(1.0)
+    view.saveImage(os.path.join(OUT, "view.png"), 800, 600, "White")
+    screen = QtGui.QGuiApplication.primaryScreen().grabWindow(0)
+    screen.save(os.path.join(OUT, "workbench.png"))
+    # Pixels of the 3D view area that are in the radius colour map's range (violet..yellow).
+    image = QtGui.QImage(os.path.join(OUT, "view.png"))
+    report["view_size"] = [image.width(), image.height()]
+    coloured = 0
+    for y in range(0, image.height(), 4):
+        for x in range(0, image.width(), 4):
+            c = QtGui.QColor(image.pixel(x, y))
+            if abs(c.red() - c.green()) > 60 or abs(c.green() - c.blue()) > 60:
+                coloured += 1
+    report["coloured_pixels_sampled"] = coloured
+
+    # Changing the box recomputes the medial axis.
+    box.Length = 80.0
+    doc.recompute()
+    settle(0.5)
+    report["bbox_after_change"] = [feature.Mesh.BoundBox.XLength, feature.Mesh.BoundBox.YLength]
+    report["colors_after_change"] = [len(feature.RadiusColors), feature.Mesh.CountPoints]
+
+    # A face is no solid: the command stays inactive, the API raises and reports.
+    plane = doc.addObject("Part::Plane", "Plane")
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(plane)
+    settle(0.3)
+    report["create_active_with_face"] = Gui.Command.get("MedialAxis_Create").isActive()
+    count = len(doc.Objects)
+    import cadmedial.app
+    try:
+        cadmedial.app.make_medial_axis(plane)
+        report["face_error"] = None
+    except Exception as error:
+        report["face_error"] = "%s: %s" % (type(error).__name__, error)
+    settle(0.3)
+    report["objects_added_by_face"] = len(doc.Objects) - count
+    report["report_view_has_error"] = "Medial axis of Plane" in report_view_text()
+
+    # Two selected solids give two features.
+    before = [o.Name for o in doc.Objects if o.Name.startswith("MedialAxis")]
+    boxes = [doc.addObject("Part::Box", "Small") for _ in range(2)]
+    boxes[1].Placement.Base = App.Vector(0, 0, 50)
+    doc.recompute()
+    Gui.Selection.clearSelection()
+    for b in boxes:
+        Gui.Selection.addSelection(b)
+    Gui.runCommand("MedialAxis_Create")
+    settle(0.3)
+    task_panel.active_panel.samples.setValue(1000)
+    task_panel.active_panel.accept()
+    wait_until(lambda: task_panel.active_panel is None, 300, "the two computes")
+    after = [o.Name for o in doc.Objects if o.Name.startswith("MedialAxis")]
+    report["features_for_two_boxes"] = len(after) - len(before)
+
+    # Stop during a long compute: nothing is added.
+    count = len(doc.Objects)
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(box)
+    Gui.runCommand("MedialAxis_Create")
+    settle(0.3)
+    panel = task_panel.active_panel
+    panel.samples.setValue(3000000)
+    panel.accept()
+    settle(0.5)
+    panel.stop.click()
+    wait_until(lambda: panel.job is None, 120, "the stopped compute to end")
+    report["stopped_message"] = panel.stage.text()
+    report["objects_added_by_stop"] = len(doc.Objects) - count
+    panel.reject()
+    settle(0.3)
+    report["dialog_open_after_reject"] = Gui.Control.activeDialog()
+
+    # Editing: the task panel on an existing feature changes its parameters and recomputes.
+    Gui.ActiveDocument.setEdit(feature.Name)
+    settle(0.3)
+    panel = task_panel.active_panel
+    report["edit_panel_for"] = panel.edit.Name if panel and panel.edit else None
+    panel.theta.setValue(10.0)
+    panel.accept()
+    settle(0.5)
+    report["edited"] = {"theta": feature.Theta, "status": feature.Status,
+                        "dialog_open": Gui.Control.activeDialog()}
+
+    # The console one-liner gets the coloured view provider too.
+    cube = doc.addObject("Part::Box", "Cube")
+    cube.Placement.Base = App.Vector(0, 60, 0)
+    doc.recompute()
+    made = cadmedial.app.make_medial_axis(cube, samples=1000)
+    settle(0.3)
+    report["console"] = {
+        "proxy": type(made.ViewObject.Proxy).__name__, "coloring": made.ViewObject.Coloring,
+        "colors": len(made.RadiusColors), "points": made.Mesh.CountPoints}
+    report["steps"].append("done")
+
+
+def main():
+    try:
+        run()
+        finish(0)
+    except Exception:
+        report["exception"] = traceback.format_exc()
+        finish(1)
+
+
+QtCore.QTimer.singleShot(1500, main)

@@ -1,0 +1,212 @@
+"""The MedialAxis and MedialShape document objects, headless (run inside freecadcmd)."""
+
+import os
+
+import numpy as np
+import pytest
+
+FreeCAD = pytest.importorskip("FreeCAD", reason="FreeCAD's lib folder is not on sys.path")
+import Part  # noqa: E402
+
+import cadmedial  # noqa: E402
+import cadmedial.app as medial_app  # noqa: E402
+
+SAMPLES = 3000
+
+
+@pytest.fixture
+def doc():
+    yield FreeCAD.newDocument("MedialTest")
+    for name in list(FreeCAD.listDocuments()):  # also the ones reopened by the test
+        FreeCAD.closeDocument(name)
+
+
+def add_box(doc, length=10.0, width=20.0, height=30.0):
+    box = doc.addObject("Part::Box", "Box")
+    box.Length, box.Width, box.Height = length, width, height
+    doc.recompute()
+    return box
+
+
+def reopen(doc, tmp_path):
+    path = str(tmp_path / "medial.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    return FreeCAD.openDocument(path)
+
+
+def mesh_points(obj):
+    return np.array([tuple(p.Vector) for p in obj.Mesh.Points])
+
+
+def test_feature_holds_the_engine_result(doc):
+    box = add_box(doc)
+    feature = medial_app.make_medial_axis(box, samples=SAMPLES)
+    expected = cadmedial.compute(box.Shape, samples=SAMPLES)
+    assert feature.Status == "ok"
+    assert feature.VertexCount == expected.num_vertices
+    assert feature.FaceCount == expected.num_faces
+    assert feature.SampleCount == expected.stats["samples"]
+    assert feature.Mesh.CountPoints == expected.num_vertices
+    # Every fan triangle is there, also at the non-manifold junctions of the medial surface.
+    assert feature.Mesh.CountFacets == len(expected.triangles())
+    assert len(feature.RadiusColors) == feature.Mesh.CountPoints
+    # The mesh keeps the engine's vertex order (float32 in FreeCAD's mesh), as the per-vertex
+    # colours need. (Another compute may order vertices differently: compare with this one.)
+    own = medial_app.medial_result(feature)
+    np.testing.assert_allclose(mesh_points(feature), own.vertices, atol=1e-4)
+    assert feature.RadiusMax.Value == pytest.approx(expected.radius.max())
+    assert feature.Timings and feature.ComputeTime > 0
+
+
+def test_changing_the_box_recomputes_the_medial_axis(doc):
+    box = add_box(doc)
+    feature = medial_app.make_medial_axis(box, samples=SAMPLES)
+    tol = 2 * feature.SpacingUsed.Value
+    # A box's medial axis reaches all its edges: same bounding box; the largest radius is half
+    # the smallest side.
+    assert feature.Mesh.BoundBox.YLength == pytest.approx(20.0, abs=tol)
+    assert feature.RadiusMax.Value == pytest.approx(5.0, abs=tol)
+    box.Width = 40.0
+    box.Length = 6.0
+    doc.recompute()
+    tol = 2 * feature.SpacingUsed.Value
+    assert feature.Status == "ok"
+    assert feature.Mesh.BoundBox.YLength == pytest.approx(40.0, abs=tol)
+    assert feature.Mesh.BoundBox.XLength == pytest.approx(6.0, abs=tol)
+    assert feature.RadiusMax.Value == pytest.approx(3.0, abs=tol)
+    assert len(feature.RadiusColors) == feature.Mesh.CountPoints
+
+
+def test_parameters_are_properties_that_recompute(doc):
+    box = add_box(doc)
+    feature = medial_app.make_medial_axis(box, samples=SAMPLES)
+    feature.Spacing = 2.0
+    doc.recompute()
+    assert feature.Status == "ok"
+    assert feature.SpacingUsed.Value == pytest.approx(2.0)
+    assert feature.VertexCount == cadmedial.compute(box.Shape, spacing=2.0).num_vertices
+
+
+def test_save_and_reopen_keeps_the_result_without_recomputing(doc, tmp_path):
+    box = add_box(doc)
+    feature = medial_app.make_medial_axis(box, samples=SAMPLES, shape=True)
+    before = dict(points=mesh_points(feature), colors=list(feature.RadiusColors),
+                  vertices=feature.VertexCount, faces=feature.Mesh.CountFacets,
+                  shape_faces=len(doc.getObject("MedialShape").Shape.Faces))
+    result = medial_app.medial_result(feature)
+
+    doc = reopen(doc, tmp_path)
+    feature = doc.getObject("MedialAxis")
+    assert isinstance(feature.Proxy, medial_app.MedialAxis)
+    assert feature.Proxy.result is None  # execute() did not run: it would have set it
+    assert "Touched" not in feature.State
+    assert feature.VertexCount == before["vertices"]
+    assert feature.Mesh.CountFacets == before["faces"]
+    np.testing.assert_array_equal(mesh_points(feature), before["points"])
+    # Colours are saved as 8-bit RGBA.
+    np.testing.assert_allclose(np.array(feature.RadiusColors), np.array(before["colors"]), atol=0.5 / 255)
+    assert len(doc.getObject("MedialShape").Shape.Faces) == before["shape_faces"]
+    reloaded = medial_app.medial_result(feature)  # from the PLY saved in the document
+    np.testing.assert_array_equal(reloaded.vertices, result.vertices)
+    np.testing.assert_array_equal(reloaded.faces.indices, result.faces.indices)
+
+    # The link survives too: the reopened feature follows its source.
+    doc.getObject("Box").Width = 50.0
+    doc.recompute()
+    assert feature.Mesh.BoundBox.YLength == pytest.approx(50.0, abs=2 * feature.SpacingUsed.Value)
+
+
+def test_export_writes_every_format_after_reopening(doc, tmp_path):
+    feature = medial_app.make_medial_axis(add_box(doc), samples=SAMPLES)
+    count = feature.VertexCount
+    doc = reopen(doc, tmp_path)
+    feature = doc.getObject("MedialAxis")
+    for ext in ("ply", "obj", "ma"):
+        medial_app.export_medial_axis(feature, str(tmp_path / ("out." + ext)))
+    assert cadmedial.load(tmp_path / "out.ply").num_vertices == count
+    assert cadmedial.load(tmp_path / "out.obj").num_vertices == count
+
+
+def test_part_shape_has_one_planar_face_per_polygon(doc):
+    feature = medial_app.make_medial_axis(add_box(doc), samples=SAMPLES, shape=True)
+    shape = doc.getObject("MedialShape").Shape
+    faces = feature.FaceCount
+    assert shape.ShapeType == "Compound"
+    assert 0.9 * faces <= len(shape.Faces) <= faces  # degenerate polygons are skipped
+    assert all(f.Surface.TypeId == "Part::GeomPlane" for f in shape.Faces)
+    for a, b in ((shape.BoundBox.XMin, feature.Mesh.BoundBox.XMin),
+                 (shape.BoundBox.YMax, feature.Mesh.BoundBox.YMax)):
+        assert a == pytest.approx(b, abs=1e-4)
+
+
+def test_non_solid_source_raises_reports_and_adds_nothing(doc, capfd):
+    plane = doc.addObject("Part::Plane", "Plane")
+    doc.recompute()
+    names = [o.Name for o in doc.Objects]
+    with pytest.raises(cadmedial.InvalidInput):
+        medial_app.make_medial_axis(plane)
+    assert [o.Name for o in doc.Objects] == names
+    out, err = capfd.readouterr()
+    assert "Medial axis of Plane" in out + err
+
+
+def test_failed_recompute_reports_and_keeps_the_last_result(doc, capfd):
+    feature = medial_app.make_medial_axis(add_box(doc), samples=SAMPLES)
+    points, colors = feature.Mesh.CountPoints, len(feature.RadiusColors)
+    capfd.readouterr()
+    feature.Theta = 95.0  # outside (0, 90)
+    doc.recompute()
+    assert feature.Status.startswith("failed") and "theta" in feature.Status
+    assert (feature.Mesh.CountPoints, len(feature.RadiusColors)) == (points, colors)
+    out, err = capfd.readouterr()
+    assert "medial axis not updated" in out + err
+    feature.Theta = 5.0
+    doc.recompute()
+    assert feature.Status == "ok"
+
+
+def test_source_becoming_a_face_keeps_the_last_result(doc):
+    feature = medial_app.make_medial_axis(add_box(doc), samples=SAMPLES)
+    points = feature.Mesh.CountPoints
+    plane = doc.addObject("Part::Plane", "Plane")
+    doc.recompute()
+    feature.Source = plane
+    doc.recompute()
+    assert feature.Status.startswith("failed")
+    assert feature.Mesh.CountPoints == points
+
+
+def test_compound_of_two_solids_gives_one_feature_with_both(doc, data):
+    part = doc.addObject("Part::Feature", "TwoCubes")
+    part.Shape = Part.read(data("two_cubes.brep"))
+    feature = medial_app.make_medial_axis(part, samples=SAMPLES)
+    result = medial_app.medial_result(feature)
+    assert set(np.unique(result.face_solid)) == {0, 1}
+    assert feature.Mesh.BoundBox.XLength == pytest.approx(30.0, abs=2 * feature.SpacingUsed.Value)
+
+
+def test_given_result_is_used_as_is(doc):
+    box = add_box(doc)
+    result = cadmedial.compute(box.Shape, samples=SAMPLES)
+    feature = medial_app.make_medial_axis(box, samples=SAMPLES, result=result)
+    assert feature.Proxy.result is result
+    assert feature.ComputeTime == pytest.approx(result.stats["timings"]["total"])
+
+
+def test_freecadcmd_example_writes_a_document(tmp_path, data):
+    import subprocess
+    from conftest import REPO
+    out = tmp_path / "box.FCStd"
+    env = dict(os.environ, CADMEDIAL_INPUT=data("box_10x20x30.step"), CADMEDIAL_OUTPUT=str(out),
+               CADMEDIAL_SAMPLES=str(SAMPLES))
+    run = subprocess.run(["freecadcmd", os.path.join(REPO, "examples", "medial_axis_freecadcmd.py")],
+                         env=env, capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "vertices" in run.stdout
+    doc = FreeCAD.openDocument(str(out))
+    try:
+        feature = doc.getObject("MedialAxis")
+        assert feature.Status == "ok" and feature.Mesh.CountPoints == feature.VertexCount > 0
+    finally:
+        FreeCAD.closeDocument(doc.Name)
