@@ -178,3 +178,20 @@ TEST(MeshMeasures, DistanceToTriangles) {
 
 }  // namespace
 }  // namespace cadmedial::test
+
+namespace cadmedial::test {
+namespace {
+
+TEST(ShapeReference, SolidEulerCharacteristicFromTheBrep) {
+  EXPECT_EQ(solid_euler_characteristic(make_box(10, 8, 6)), 1);
+  EXPECT_EQ(solid_euler_characteristic(make_sphere(3)), 1);
+  EXPECT_EQ(solid_euler_characteristic(make_cylinder(2, 8)), 1);
+  EXPECT_EQ(solid_euler_characteristic(make_torus(5, 1.5)), 0);
+  EXPECT_EQ(solid_euler_characteristic(make_block_with_hole(10, 10, 4, 2)), 0);
+  EXPECT_EQ(solid_euler_characteristic(make_l_block(8, 3, 3)), 1);
+  EXPECT_EQ(solid_euler_characteristic(make_pocket_block(8, 4, 3, 5, 2)), 1);
+  EXPECT_EQ(solid_euler_characteristic(make_filleted_box(8, 6, 4, 1.5)), 1);
+}
+
+}  // namespace
+}  // namespace cadmedial::test
