@@ -1,0 +1,15 @@
+// The sub-commands of the cadmedial program. Each returns the exit status on success and throws
+// (InvalidInput, GeometryError, ...) on failure; main() turns exceptions into messages and statuses.
+#pragma once
+
+#include "args.h"
+
+namespace cadmedial::cli {
+
+/// `cadmedial compute`: reads, computes, writes the mesh (and --stats), prints a summary on stdout.
+int run_compute(const Args& args);
+
+/// `cadmedial info`: solids, their topology, volume, bounding box, and the sampling plan.
+int run_info(const Args& args);
+
+}  // namespace cadmedial::cli

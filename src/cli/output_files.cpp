@@ -1,0 +1,59 @@
+// Output paths are checked before computing so that a typo does not cost a long run, and written
+// atomically so that a failure or a kill never leaves a partial file for the next tool to read.
+#include "output_files.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "core/errors.h"
+
+namespace cadmedial::cli {
+
+namespace fs = std::filesystem;
+
+void check_mesh_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".ply" && ext != ".obj" && ext != ".ma")
+    throw InvalidInput(path + ": unknown output type '" + ext + "' (expected .ply, .obj or .ma)");
+}
+
+void check_writable(const std::string& path) {
+  const fs::path target(path);
+  const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::error_code ec;
+  if (!fs::exists(dir, ec)) throw InvalidInput(path + ": directory " + dir.string() + " does not exist");
+  if (!fs::is_directory(dir, ec)) throw InvalidInput(path + ": " + dir.string() + " is not a directory");
+  if (fs::is_directory(target, ec)) throw InvalidInput(path + ": is a directory");
+  // access() tells whether we may create the temporary file and rename it there.
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw InvalidInput(path + ": directory " + dir.string() + " is not writable (" + std::strerror(errno) + ")");
+}
+
+void write_text_atomically(const std::string& path, const std::string& text) {
+  const fs::path target(path);
+  const fs::path temp =
+      target.parent_path() / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()));
+  auto fail = [&](const std::string& why) {
+    std::error_code ignored;
+    fs::remove(temp, ignored);
+    throw InvalidInput(path + ": cannot write: " + why);
+  };
+  {
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) fail(std::strerror(errno));
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.close();
+    if (out.fail()) fail("write failed (disk full?)");
+  }
+  if (std::rename(temp.c_str(), target.c_str()) != 0) fail(std::strerror(errno));
+}
+
+}  // namespace cadmedial::cli

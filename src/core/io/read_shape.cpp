@@ -1,0 +1,406 @@
+// Reading STEP / IGES / BREP into a shape, and turning a shape into checked, closed solids.
+//
+// What extract_solids accepts, and why:
+// - solids (also inside compounds and compsolids): checked as they are;
+// - closed shells that are not solids: made solids (BRepBuilderAPI_MakeSolid, ShapeFix_Solid for
+//   the orientation), since STEP/IGES exports often stop at the shell;
+// - loose faces (IGES often holds only faces): sewn together; every shell that sewing makes must be
+//   closed, or the whole shape is refused: a face left out would silently change the medial axis;
+// - loose wires, edges and vertices (construction geometry): ignored, they bound no volume. When the
+//   shape holds nothing else, the "no solid" message counts them so the user sees what was there.
+// Edge, face and vertex numbers in messages are 1-based indices of TopExp::MapShapes over the solid
+// (or shell), which is the numbering FreeCAD shows as Edge12, Face3, ...
+#include "read_shape.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <BRepBndLib.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepCheck.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepCheck_ListOfStatus.hxx>
+#include <BRepCheck_Result.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <IGESControl_Reader.hxx>
+#include <STEPControl_Reader.hxx>
+#include <ShapeFix_Solid.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <Geom_Curve.hxx>
+
+#include "../errors.h"
+
+namespace cadmedial {
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+std::string failure_text(const Standard_Failure& e) {
+  const char* m = e.GetMessageString();
+  std::string text = (m && *m) ? m : "";
+  std::string type = e.DynamicType()->Name();
+  return text.empty() ? type : type + ": " + text;
+}
+
+std::string point_text(const gp_Pnt& p) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "(" << p.X() << ", " << p.Y() << ", " << p.Z() << ")";
+  return s.str();
+}
+
+// Midpoint of an edge's 3D curve, to tell the user where a bad edge is.
+std::string edge_location(const TopoDS_Edge& edge) {
+  try {
+    double first = 0, last = 0;
+    Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
+    if (curve.IsNull()) return "";
+    return " near " + point_text(curve->Value(0.5 * (first + last)));
+  } catch (const Standard_Failure&) {
+    return "";
+  }
+}
+
+// ---- reading --------------------------------------------------------------------------------
+
+TopoDS_Shape read_step(const std::string& path) {
+  STEPControl_Reader reader;
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+    throw InvalidInput(path + ": not a readable STEP file (the STEP parser failed)");
+  if (reader.TransferRoots() == 0 || reader.NbShapes() == 0)
+    throw InvalidInput(path + ": the STEP file holds no shape");
+  return reader.OneShape();
+}
+
+TopoDS_Shape read_iges(const std::string& path) {
+  IGESControl_Reader reader;
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+    throw InvalidInput(path + ": not a readable IGES file (the IGES parser failed)");
+  if (reader.TransferRoots() == 0 || reader.NbShapes() == 0)
+    throw InvalidInput(path + ": the IGES file holds no shape");
+  return reader.OneShape();
+}
+
+// BRepTools::Read prints to std::cout and returns nothing useful on text that is not BREP, so
+// look for the header it writes ("CASCADE Topology V1/V2/V3...") first.
+bool has_brep_header(std::istream& in) {
+  std::string head(4096, '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  in.clear();
+  in.seekg(0);
+  return head.find("CASCADE Topology V") != std::string::npos;
+}
+
+TopoDS_Shape read_brep_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidInput(path + ": cannot open for reading");
+  if (!has_brep_header(in)) throw InvalidInput(path + ": not a BREP file (no 'CASCADE Topology' header)");
+  TopoDS_Shape shape;
+  BRep_Builder builder;
+  BRepTools::Read(shape, in, builder);
+  if (shape.IsNull()) throw InvalidInput(path + ": not a BREP file, or it holds no shape");
+  return shape;
+}
+
+// ---- checking -------------------------------------------------------------------------------
+
+// Every edge of a closed 2-manifold shell is used twice: by two faces, or twice by one face
+// (the seam of a periodic surface). Degenerate edges (a sphere's pole) are used once and are fine.
+// Returns "" or the reason the shell is not closed, with an edge number from `edge_index`.
+std::string open_or_nonmanifold_edge(const TopoDS_Shape& shell, const TopTools_IndexedMapOfShape& edge_index) {
+  TopTools_IndexedMapOfShape edges;
+  std::vector<int> uses;
+  std::vector<TopTools_IndexedMapOfShape> faces_of;
+  for (TopExp_Explorer fx(shell, TopAbs_FACE); fx.More(); fx.Next()) {
+    for (TopExp_Explorer ex(fx.Current(), TopAbs_EDGE); ex.More(); ex.Next()) {
+      const int i = edges.Add(ex.Current());
+      if (i > static_cast<int>(uses.size())) {
+        uses.push_back(0);
+        faces_of.emplace_back();
+      }
+      ++uses[i - 1];
+      faces_of[i - 1].Add(fx.Current());
+    }
+  }
+  for (int i = 1; i <= edges.Extent(); ++i) {
+    const TopoDS_Edge& edge = TopoDS::Edge(edges(i));
+    if (BRep_Tool::Degenerated(edge)) continue;
+    const int nfaces = faces_of[i - 1].Extent();
+    const int n = uses[i - 1];
+    if (n == 2) continue;
+    const std::string name = "edge " + std::to_string(edge_index.FindIndex(edge));
+    if (n < 2)
+      return name + " is bounded by 1 face (the shell is open)" + edge_location(edge);
+    return name + " is bounded by " + std::to_string(nfaces) + " faces (non-manifold)" + edge_location(edge);
+  }
+  return "";
+}
+
+std::string status_name(BRepCheck_Status status) {
+  std::ostringstream s;
+  BRepCheck::Print(status, s);
+  std::string text = s.str();
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  return text;
+}
+
+// The first defect BRepCheck_Analyzer found on a sub-shape of `solid`, as "vertex 3 is invalid
+// (BRepCheck_...)", smallest sub-shapes first since a bad vertex also makes its edges and faces
+// invalid. A defect can be recorded on the shape itself or "in the context" of a larger one (a
+// vertex that is off its edge's curve): both are looked at.
+std::string first_check_failure(const TopoDS_Shape& solid, const BRepCheck_Analyzer& analyzer) {
+  auto first_error = [](const BRepCheck_ListOfStatus& list) {
+    for (BRepCheck_ListOfStatus::Iterator it(list); it.More(); it.Next())
+      if (it.Value() != BRepCheck_NoError) return it.Value();
+    return BRepCheck_NoError;
+  };
+  const std::pair<TopAbs_ShapeEnum, const char*> kinds[] = {
+      {TopAbs_VERTEX, "vertex"}, {TopAbs_EDGE, "edge"}, {TopAbs_WIRE, "wire"},
+      {TopAbs_FACE, "face"},     {TopAbs_SHELL, "shell"}};
+  for (const auto& [type, type_name] : kinds) {
+    TopTools_IndexedMapOfShape subs;
+    TopExp::MapShapes(solid, type, subs);
+    for (int i = 1; i <= subs.Extent(); ++i) {
+      Handle(BRepCheck_Result) result;
+      try {
+        result = analyzer.Result(subs(i));
+      } catch (const Standard_Failure&) {
+        continue;  // not analysed (the analyzer keeps only what it reached)
+      }
+      if (result.IsNull()) continue;
+      BRepCheck_Status status = first_error(result->Status());
+      for (result->InitContextIterator(); status == BRepCheck_NoError && result->MoreShapeInContext();
+           result->NextShapeInContext())
+        status = first_error(result->StatusOnShape());
+      if (status == BRepCheck_NoError) continue;
+      std::string where;
+      if (type == TopAbs_EDGE) where = edge_location(TopoDS::Edge(subs(i)));
+      if (type == TopAbs_VERTEX) where = " at " + point_text(BRep_Tool::Pnt(TopoDS::Vertex(subs(i))));
+      return std::string(type_name) + " " + std::to_string(i) + " is invalid (" + status_name(status) + ")" + where;
+    }
+  }
+  return "the solid is invalid (BRepCheck_Analyzer names no sub-shape)";
+}
+
+double diagonal(const TopoDS_Shape& shape) {
+  Bnd_Box box;
+  BRepBndLib::Add(shape, box);
+  if (box.IsVoid()) return 0.0;
+  return std::sqrt(box.SquareExtent());
+}
+
+// Checks a solid; returns it, reversed when its volume came out negative (faces oriented inward).
+TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name) {
+  TopTools_IndexedMapOfShape edge_index;
+  TopExp::MapShapes(solid, TopAbs_EDGE, edge_index);
+  int nshells = 0;
+  for (TopExp_Explorer sx(solid, TopAbs_SHELL); sx.More(); sx.Next()) {
+    ++nshells;
+    const std::string why = open_or_nonmanifold_edge(sx.Current(), edge_index);
+    if (!why.empty()) throw InvalidInput(name + ": " + why);
+  }
+  if (nshells == 0) throw InvalidInput(name + ": has no shell (an empty solid)");
+
+  BRepCheck_Analyzer analyzer(solid);
+  if (!analyzer.IsValid()) throw InvalidInput(name + ": " + first_check_failure(solid, analyzer));
+
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(solid, props);
+  double volume = props.Mass();
+  const double d = diagonal(solid);
+  // Relative to the box: a volume this small against d^3 is a flat or inside-out-and-cancelled shape.
+  const double tiny = 1e-12 * d * d * d;
+  if (!std::isfinite(volume) || std::abs(volume) <= tiny)
+    throw InvalidInput(name + ": has zero volume");
+  if (volume < 0) solid.Reverse();
+  return solid;
+}
+
+TopoDS_Solid solid_from_closed_shell(const TopoDS_Shell& shell) {
+  // ShapeFix_Solid::SolidFromShell orients the shell so that the solid has its material inside.
+  ShapeFix_Solid fix;
+  TopoDS_Solid solid = fix.SolidFromShell(shell);
+  if (solid.IsNull()) solid = BRepBuilderAPI_MakeSolid(shell).Solid();
+  return solid;
+}
+
+// What a shape holds at its top level (inside compounds), sorted by kind.
+struct Parts {
+  std::vector<TopoDS_Solid> solids;
+  std::vector<TopoDS_Shell> shells;
+  std::vector<TopoDS_Face> faces;
+  int loose_wires = 0, loose_edges = 0, loose_vertices = 0;
+};
+
+void collect(const TopoDS_Shape& shape, Parts& parts) {
+  switch (shape.ShapeType()) {
+    case TopAbs_COMPOUND:
+    case TopAbs_COMPSOLID:
+      for (TopoDS_Iterator it(shape); it.More(); it.Next()) collect(it.Value(), parts);
+      break;
+    case TopAbs_SOLID: parts.solids.push_back(TopoDS::Solid(shape)); break;
+    case TopAbs_SHELL: parts.shells.push_back(TopoDS::Shell(shape)); break;
+    case TopAbs_FACE: parts.faces.push_back(TopoDS::Face(shape)); break;
+    case TopAbs_WIRE: ++parts.loose_wires; break;
+    case TopAbs_EDGE: ++parts.loose_edges; break;
+    case TopAbs_VERTEX: ++parts.loose_vertices; break;
+    default: break;
+  }
+}
+
+// Shells made by sewing the loose faces; throws when they do not close.
+std::vector<TopoDS_Shell> sew_faces(const std::vector<TopoDS_Face>& faces) {
+  BRep_Builder builder;
+  TopoDS_Compound all;
+  builder.MakeCompound(all);
+  double max_tol = 0.0;
+  for (const TopoDS_Face& f : faces) {
+    builder.Add(all, f);
+    for (TopExp_Explorer vx(f, TopAbs_VERTEX); vx.More(); vx.Next())
+      max_tol = std::max(max_tol, BRep_Tool::Tolerance(TopoDS::Vertex(vx.Current())));
+  }
+  // The files' own tolerance (IGES readers set it from the file's resolution), and at least a
+  // millionth of the size: gaps below that are round-off of the exporter, not holes.
+  const double tol = std::max({1e-7, 1e-6 * diagonal(all), 2.0 * max_tol});
+  BRepBuilderAPI_Sewing sewing(tol);
+  for (const TopoDS_Face& f : faces) sewing.Add(f);
+  sewing.Perform();
+  const std::string what = std::to_string(faces.size()) + " loose face" + (faces.size() == 1 ? "" : "s");
+  if (sewing.NbFreeEdges() > 0)
+    throw InvalidInput(what + " (not in any solid or shell) do not sew into closed shells: " +
+                       std::to_string(sewing.NbFreeEdges()) + " edges stay open, e.g. one" +
+                       edge_location(sewing.FreeEdge(1)));
+  if (sewing.NbMultipleEdges() > 0)
+    throw InvalidInput(what + " (not in any solid or shell) sew into a non-manifold shape: " +
+                       std::to_string(sewing.NbMultipleEdges()) + " edges have more than two faces, e.g. one" +
+                       edge_location(sewing.MultipleEdge(1)));
+  Parts sewn;
+  collect(sewing.SewedShape(), sewn);
+  if (!sewn.faces.empty())
+    throw InvalidInput(what + " (not in any solid or shell): " + std::to_string(sewn.faces.size()) +
+                       " face(s) do not join any other after sewing");
+  return sewn.shells;
+}
+
+}  // namespace
+
+TopoDS_Shape read_shape_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  const std::string ext = lower(fs::path(path).extension().string());
+  enum class Format { Step, Iges, Brep } format;
+  if (ext == ".step" || ext == ".stp") format = Format::Step;
+  else if (ext == ".iges" || ext == ".igs") format = Format::Iges;
+  else if (ext == ".brep" || ext == ".brp") format = Format::Brep;
+  else
+    throw InvalidInput(path + ": unknown file type '" + ext +
+                       "' (expected .step, .stp, .iges, .igs, .brep or .brp)");
+
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) throw InvalidInput(path + ": no such file");
+  if (fs::is_directory(st)) throw InvalidInput(path + ": is a directory, not a file");
+  if (fs::is_regular_file(st) && fs::file_size(path, ec) == 0 && !ec) throw InvalidInput(path + ": the file is empty");
+  if (!std::ifstream(path)) throw InvalidInput(path + ": cannot open for reading (permissions?)");
+
+  try {
+    TopoDS_Shape shape;
+    switch (format) {
+      case Format::Step: shape = read_step(path); break;
+      case Format::Iges: shape = read_iges(path); break;
+      case Format::Brep: shape = read_brep_file(path); break;
+    }
+    if (shape.IsNull()) throw InvalidInput(path + ": the file holds no shape");
+    return shape;
+  } catch (const Standard_Failure& e) {
+    throw InvalidInput(path + ": cannot read (broken or truncated file?): " + failure_text(e));
+  } catch (const InvalidInput&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw InvalidInput(path + ": cannot read: " + e.what());
+  }
+}
+
+TopoDS_Shape read_brep_string(const std::string& text) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InvalidInput("BREP text: it is empty");
+  try {
+    std::istringstream in(text);
+    if (!has_brep_header(in)) throw InvalidInput("BREP text: not BREP (no 'CASCADE Topology' header)");
+    TopoDS_Shape shape;
+    BRep_Builder builder;
+    BRepTools::Read(shape, in, builder);
+    if (shape.IsNull()) throw InvalidInput("BREP text: does not parse, or holds no shape");
+    return shape;
+  } catch (const Standard_Failure& e) {
+    throw InvalidInput("BREP text: does not parse: " + failure_text(e));
+  }
+}
+
+std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape) {
+  if (shape.IsNull()) throw InvalidInput("the shape is empty (null)");
+  try {
+    Parts parts;
+    collect(shape, parts);
+
+    std::vector<TopoDS_Solid> solids;
+    for (std::size_t i = 0; i < parts.solids.size(); ++i)
+      solids.push_back(checked_solid(parts.solids[i], "solid " + std::to_string(solids.size() + 1)));
+
+    // Shells that are not inside a solid: each must be closed; then it becomes a solid.
+    for (std::size_t i = 0; i < parts.shells.size(); ++i) {
+      TopTools_IndexedMapOfShape edge_index;
+      TopExp::MapShapes(parts.shells[i], TopAbs_EDGE, edge_index);
+      const std::string why = open_or_nonmanifold_edge(parts.shells[i], edge_index);
+      if (!why.empty()) throw InvalidInput("shell " + std::to_string(i + 1) + " (not a solid): " + why);
+      solids.push_back(checked_solid(solid_from_closed_shell(parts.shells[i]),
+                                     "solid " + std::to_string(solids.size() + 1) + " (made from shell " +
+                                         std::to_string(i + 1) + ")"));
+    }
+
+    if (!parts.faces.empty()) {
+      for (const TopoDS_Shell& shell : sew_faces(parts.faces))
+        solids.push_back(checked_solid(solid_from_closed_shell(shell),
+                                       "solid " + std::to_string(solids.size() + 1) + " (sewn from loose faces)"));
+    }
+
+    if (solids.empty()) {
+      std::string held;
+      auto count = [&held](int n, const char* one, const char* many) {
+        if (n == 0) return;
+        held += (held.empty() ? "" : ", ") + std::to_string(n) + " " + (n == 1 ? one : many);
+      };
+      count(parts.loose_wires, "loose wire", "loose wires");
+      count(parts.loose_edges, "loose edge", "loose edges");
+      count(parts.loose_vertices, "loose vertex", "loose vertices");
+      throw InvalidInput("holds no solid, closed shell or face" + (held.empty() ? std::string() : " (only " + held + ")"));
+    }
+    return solids;
+  } catch (const Standard_Failure& e) {
+    throw InvalidInput("checking the solids failed: " + failure_text(e));
+  }
+}
+
+}  // namespace cadmedial

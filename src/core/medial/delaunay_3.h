@@ -1,0 +1,59 @@
+// Internal to medial/: the CGAL Delaunay triangulation with our per-vertex and per-cell data.
+#pragma once
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "../types.h"
+
+namespace cadmedial::internal {
+
+struct CellData {
+  int id = -1;             ///< index into MedialComplex::cells once the cell is used
+};
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;  // sample index
+using Cb = CGAL::Triangulation_cell_base_with_info_3<CellData, K, CGAL::Delaunay_triangulation_cell_base_3<K>>;
+using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
+using Delaunay = CGAL::Delaunay_triangulation_3<K, Tds>;
+using Cell = Delaunay::Cell_handle;
+using Vertex = Delaunay::Vertex_handle;
+
+/// Faces before separation: their corners are Voronoi vertices (cells, id >= 0) or samples
+/// (encoded -(sample+1)).
+struct MedialComplex {
+  std::vector<Cell> cells;       ///< by id
+  std::vector<Point3> centers;   ///< circumcentre per cell id
+  std::vector<double> radii;     ///< circumradius per cell id
+  std::vector<int> start{0};     ///< CSR over nodes
+  std::vector<int> nodes;
+  std::vector<FaceKind> kind;
+  std::vector<int> points;       ///< cells where a selected facet collapsed to a single point
+
+  int cell_id(const Cell& c) {
+    if (c->info().id < 0) {
+      c->info().id = static_cast<int>(cells.size());
+      cells.push_back(c);
+      const K::Point_3 x = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
+                                              c->vertex(2)->point(), c->vertex(3)->point());
+      centers.push_back({x.x(), x.y(), x.z()});
+      radii.push_back(std::sqrt(CGAL::squared_distance(x, c->vertex(0)->point())));
+    }
+    return c->info().id;
+  }
+  static int sample_node(int s) { return -(s + 1); }
+  void add(const std::vector<int>& face_nodes, FaceKind k) {
+    nodes.insert(nodes.end(), face_nodes.begin(), face_nodes.end());
+    start.push_back(static_cast<int>(nodes.size()));
+    kind.push_back(k);
+  }
+  std::size_t size() const { return kind.size(); }
+};
+
+}  // namespace cadmedial::internal

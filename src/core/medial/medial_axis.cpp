@@ -1,0 +1,401 @@
+#include "medial_axis.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <set>
+#include <unordered_map>
+
+#include "../errors.h"
+#include "delaunay_3.h"
+
+namespace cadmedial {
+
+using namespace internal;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+Point3 sub(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Point3 cross(const Point3& a, const Point3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double norm(const Point3& a) { return std::sqrt(dot(a, a)); }
+
+// Unit normal and circumradius of every umbrella triangle.
+struct TriangleGeometry {
+  std::vector<Point3> normal;
+  std::vector<double> radius;
+};
+
+TriangleGeometry triangle_geometry(const Samples& samples, const Umbrellas& umbrellas) {
+  TriangleGeometry g;
+  g.normal.resize(umbrellas.triangles.size());
+  g.radius.resize(umbrellas.triangles.size());
+  for (size_t t = 0; t < umbrellas.triangles.size(); ++t) {
+    const auto& tri = umbrellas.triangles[t];
+    const Point3 &a = samples.points[tri[0]], &b = samples.points[tri[1]], &c = samples.points[tri[2]];
+    const Point3 ab = sub(b, a), ac = sub(c, a), bc = sub(c, b);
+    const Point3 n = cross(ab, ac);
+    const double area2 = norm(n);
+    g.normal[t] = area2 > 0 ? Point3{n[0] / area2, n[1] / area2, n[2] / area2} : Point3{0, 0, 0};
+    // R = |ab| |ac| |bc| / (4 area) = |ab||ac||bc| / (2 |ab x ac|)
+    g.radius[t] = area2 > 0 ? norm(ab) * norm(ac) * norm(bc) / (2.0 * area2) : 1e300;
+  }
+  return g;
+}
+
+// Section 3: does Delaunay edge pq pass the Angle or the Ratio condition at p's umbrella?
+class Selection {
+ public:
+  Selection(const Samples& s, const Umbrellas& u, const MedialParams& params)
+      : s_(s), u_(u), g_(triangle_geometry(s, u)),
+        sin_theta_(std::sin(params.theta_deg * 3.14159265358979323846 / 180.0)), rho_(params.rho) {}
+
+  bool passes(int p, int q) const {
+    if (u_.size(p) == 0) return false;
+    const Point3 d = sub(s_.points[q], s_.points[p]);
+    const double len = norm(d);
+    if (len <= 0) return false;
+    bool angle = true, ratio = true;
+    for (int k = u_.start[p]; k < u_.start[p + 1]; ++k) {
+      const int t = u_.incident[k];
+      // Angle [theta]: the acute angle between n_ptu and pq is below pi/2 - theta for every
+      // umbrella triangle, i.e. |cos| > sin(theta).
+      if (angle && std::abs(dot(g_.normal[t], d)) <= sin_theta_ * len) angle = false;
+      // Ratio [rho]: |pq| / R_ptu > rho for every umbrella triangle.
+      if (ratio && len <= rho_ * g_.radius[t]) ratio = false;
+      if (!angle && !ratio) return false;
+    }
+    return true;
+  }
+  // 4.2.6 line 6: either endpoint may pass.
+  bool selected(int p, int q) const { return passes(p, q) || passes(q, p); }
+
+ private:
+  const Samples& s_;
+  const Umbrellas& u_;
+  TriangleGeometry g_;
+  double sin_theta_, rho_;
+};
+
+// 4.2.6 lines 5-8: the bounded Voronoi facets dual to selected Delaunay edges. Unbounded facets
+// belong to the outer medial axis (4.2.5) and are not kept.
+void select_facets(const Delaunay& dt, const Selection& sel, MedialComplex& mc, MedialAxisStats& st,
+                   const Progress& progress) {
+  std::vector<int> face;
+  size_t count = 0;
+  const size_t total = dt.number_of_finite_edges();
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e, ++count) {
+    if (count % 65536 == 0) report(progress, "selection", static_cast<double>(count) / std::max<size_t>(1, total));
+    const int p = e->first->vertex(e->second)->info(), q = e->first->vertex(e->third)->info();
+    if (!sel.selected(p, q)) continue;
+    ++st.selected_facets;
+    face.clear();
+    bool bounded = true;
+    auto cc = dt.incident_cells(*e), done = cc;
+    do {
+      if (dt.is_infinite(cc)) {
+        bounded = false;
+        break;
+      }
+      face.push_back(mc.cell_id(cc));
+    } while (++cc != done);
+    if (bounded && face.size() >= 3) mc.add(face, FaceKind::Voronoi);
+  }
+}
+
+// 4.2.2 ProcConvexEdges: triangle s v1 v2 for the Voronoi edge dual to each triplet triangle,
+// and the fill triangles s s' v where v is a Voronoi vertex of s' too.
+void complete_convex_edges(const Delaunay& dt, const std::vector<Vertex>& handle, const Samples& samples,
+                           MedialComplex& mc, MedialAxisStats& st) {
+  std::set<std::array<int, 3>> fills;
+  for (const Triplet& t : samples.triplets) {
+    Vertex vs = handle[t.s], vl = handle[t.sl], vr = handle[t.sr];
+    if (vs == Vertex() || vl == Vertex() || vr == Vertex()) continue;
+    Cell c;
+    int i, j, k;
+    if (!dt.is_facet(vs, vl, vr, c, i, j, k)) continue;  // the sampling did not make it Delaunay
+    const Cell n = c->neighbor(6 - i - j - k);
+    if (dt.is_infinite(c) || dt.is_infinite(n)) continue;
+    const int v1 = mc.cell_id(c), v2 = mc.cell_id(n);
+    mc.add({MedialComplex::sample_node(t.s), v1, v2}, FaceKind::Edge);
+    ++st.edge_triangles;
+    for (int nb : {t.prev, t.next}) {
+      if (nb < 0 || handle[nb] == Vertex()) continue;
+      for (const Cell& cell : {c, n}) {
+        // v in V_s' means s' is among v's nearest samples; with cospherical samples that need
+        // not make s' a vertex of this very cell, so ask the distance.
+        const int id = mc.cell_id(cell);
+        const double to_nb = norm(sub(mc.centers[id], samples.points[nb]));
+        if (!cell->has_vertex(handle[nb]) && std::abs(to_nb - mc.radii[id]) > 1e-9 * mc.radii[id]) continue;
+        std::array<int, 3> key{std::min(t.s, nb), std::max(t.s, nb), mc.cell_id(cell)};
+        if (!fills.insert(key).second) continue;
+        mc.add({MedialComplex::sample_node(t.s), MedialComplex::sample_node(nb), mc.cell_id(cell)}, FaceKind::Edge);
+        ++st.edge_triangles;
+      }
+    }
+  }
+}
+
+// 4.2.3 ProcNonconcaveCorners: join corner p to each Voronoi edge of V_p on the medial axis whose
+// incident facets of V_p are all unselected. The Voronoi edge dual to Delaunay triangle pab lies
+// on facets dual to pa, pb and ab; so it is joined when ab is selected and pa, pb are not.
+void complete_corners(const Delaunay& dt, const std::vector<Vertex>& handle, const Samples& samples,
+                      const Selection& sel, MedialComplex& mc, MedialAxisStats& st) {
+  std::vector<Delaunay::Facet> facets;
+  for (size_t p = 0; p < samples.size(); ++p) {
+    if (samples.tag[p] != SampleTag::Corner || !samples.nonconcave[p] || handle[p] == Vertex()) continue;
+    facets.clear();
+    dt.finite_incident_facets(handle[p], std::back_inserter(facets));
+    for (const auto& [c, i] : facets) {
+      int ab[2], k = 0;
+      for (int j = 0; j < 4; ++j)
+        if (j != i && c->vertex(j) != handle[p]) ab[k++] = c->vertex(j)->info();
+      if (k != 2) continue;
+      if (!sel.selected(ab[0], ab[1]) || sel.selected(static_cast<int>(p), ab[0]) ||
+          sel.selected(static_cast<int>(p), ab[1]))
+        continue;
+      const Cell n = c->neighbor(i);
+      if (dt.is_infinite(c) || dt.is_infinite(n)) continue;
+      mc.add({MedialComplex::sample_node(static_cast<int>(p)), mc.cell_id(c), mc.cell_id(n)}, FaceKind::Corner);
+      ++st.corner_triangles;
+    }
+  }
+}
+
+// 4.2.5 with the exact solid at hand: a Voronoi vertex is inside when its nearest samples' outward
+// normals all point away from it; where they disagree or it sits close to the surface, the exact
+// B-rep classifier decides.
+std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const InsideTest& inside,
+                                       MedialAxisStats& st) {
+  const size_t n = mc.cells.size();
+  std::vector<std::uint8_t> label(n, 0);
+  std::vector<int> unsure;
+  for (size_t id = 0; id < n; ++id) {
+    const Point3& x = mc.centers[id];
+    int votes_in = 0, votes_out = 0;
+    double confidence = 0;
+    for (int j = 0; j < 4; ++j) {
+      const int s = mc.cells[id]->vertex(j)->info();
+      const SampleTag tag = samples.tag[s];
+      if (tag != SampleTag::Face && tag != SampleTag::Triplet) continue;
+      const Point3 d = sub(x, samples.points[s]);
+      const double len = norm(d);
+      if (len <= 0) continue;
+      const double c = dot(d, samples.normal[s]) / len;
+      (c < 0 ? votes_in : votes_out)++;
+      confidence = std::max(confidence, std::abs(c));
+    }
+    if (votes_in > 0 && votes_out == 0 && confidence > 0.5)
+      label[id] = 1;
+    else if (votes_out > 0 && votes_in == 0 && confidence > 0.5)
+      label[id] = 0;
+    else
+      unsure.push_back(static_cast<int>(id));
+  }
+  if (!unsure.empty()) {
+    std::vector<Point3> pts;
+    pts.reserve(unsure.size());
+    for (int id : unsure) pts.push_back(mc.centers[id]);
+    const std::vector<std::uint8_t> exact = inside(pts);
+    for (size_t k = 0; k < unsure.size(); ++k) label[unsure[k]] = exact[k];
+    st.exact_inside_tests += unsure.size();
+  }
+  return label;
+}
+
+// Cospherical samples (regular edge samples and their triplets form right prisms, which are
+// inscribed in spheres) give several Delaunay cells with one circumcentre: the true Voronoi
+// diagram has a single vertex there. Merging them removes zero-length Voronoi edges, which would
+// otherwise leave pinholes wherever the perturbation picked one selected facet over another.
+void merge_coincident_cells(MedialComplex& mc, double eps) {
+  const size_t n = mc.cells.size();
+  std::vector<int> rep(n);
+  std::iota(rep.begin(), rep.end(), 0);
+  std::unordered_map<long long, std::vector<int>> grid;
+  auto key = [&](long long x, long long y, long long z) { return (x & 0x1FFFFF) | ((y & 0x1FFFFF) << 21) | ((z & 0x1FFFFF) << 42); };
+  const double cell = 4 * eps;
+  for (size_t id = 0; id < n; ++id) {
+    const Point3& c = mc.centers[id];
+    const long long gx = static_cast<long long>(std::floor(c[0] / cell)), gy = static_cast<long long>(std::floor(c[1] / cell)),
+                    gz = static_cast<long long>(std::floor(c[2] / cell));
+    int found = -1;
+    for (long long x = gx - 1; x <= gx + 1 && found < 0; ++x)
+      for (long long y = gy - 1; y <= gy + 1 && found < 0; ++y)
+        for (long long z = gz - 1; z <= gz + 1 && found < 0; ++z) {
+          auto it = grid.find(key(x, y, z));
+          if (it == grid.end()) continue;
+          for (int other : it->second)
+            if (norm(sub(mc.centers[other], c)) <= eps) {
+              found = other;
+              break;
+            }
+        }
+    if (found >= 0)
+      rep[id] = found;
+    else
+      grid[key(gx, gy, gz)].push_back(static_cast<int>(id));
+  }
+  // Rewrite faces: drop repeated corners, then faces left with fewer than three, then duplicates.
+  std::vector<int> start{0}, nodes;
+  std::vector<FaceKind> kind;
+  std::set<std::vector<int>> seen;
+  std::vector<int> face, key_nodes;
+  for (size_t f = 0; f < mc.size(); ++f) {
+    face.clear();
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
+      const int node = mc.nodes[k] >= 0 ? rep[mc.nodes[k]] : mc.nodes[k];
+      if (face.empty() || face.back() != node) face.push_back(node);
+    }
+    while (face.size() > 1 && face.front() == face.back()) face.pop_back();
+    // A sphere's facets all shrink to its centre: keep the point.
+    if (face.size() == 1 && face[0] >= 0) mc.points.push_back(face[0]);
+    key_nodes = face;
+    std::sort(key_nodes.begin(), key_nodes.end());
+    if (std::unique(key_nodes.begin(), key_nodes.end()) != key_nodes.end() || face.size() < 3) continue;
+    if (!seen.insert(key_nodes).second) continue;
+    nodes.insert(nodes.end(), face.begin(), face.end());
+    start.push_back(static_cast<int>(nodes.size()));
+    kind.push_back(mc.kind[f]);
+  }
+  mc.start = std::move(start);
+  mc.nodes = std::move(nodes);
+  mc.kind = std::move(kind);
+}
+
+int find_root(std::vector<int>& parent, int x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+// Keeps faces whose Voronoi vertices are all inside, then the largest connected piece: the
+// inner medial axis of a connected solid is connected (homotopy equivalent to the solid).
+MedialMesh extract_inner(const MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
+                         int solid_index, MedialAxisStats& st) {
+  std::vector<int> kept;
+  for (size_t f = 0; f < mc.size(); ++f) {
+    bool in = true;
+    for (int k = mc.start[f]; k < mc.start[f + 1] && in; ++k)
+      if (mc.nodes[k] >= 0 && !inside[mc.nodes[k]]) in = false;
+    if (in) kept.push_back(static_cast<int>(f));
+  }
+  // Union-find over faces sharing a node.
+  std::unordered_map<int, int> node_owner;
+  std::vector<int> parent(kept.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (size_t i = 0; i < kept.size(); ++i) {
+    const int f = kept[i];
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
+      auto [it, fresh] = node_owner.emplace(mc.nodes[k], static_cast<int>(i));
+      if (!fresh) parent[find_root(parent, static_cast<int>(i))] = find_root(parent, it->second);
+    }
+  }
+  std::unordered_map<int, int> piece_size;
+  for (size_t i = 0; i < kept.size(); ++i) ++piece_size[find_root(parent, static_cast<int>(i))];
+  st.components = piece_size.size();
+  int best = -1, best_size = 0;
+  for (const auto& [root, size] : piece_size)
+    if (size > best_size || (size == best_size && root < best)) best = root, best_size = size;
+
+  MedialMesh mesh;
+  std::unordered_map<int, int> out_index;
+  std::vector<int> poly;
+  for (size_t i = 0; i < kept.size(); ++i) {
+    if (find_root(parent, static_cast<int>(i)) != best) continue;
+    const int f = kept[i];
+    poly.clear();
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
+      const int node = mc.nodes[k];
+      auto [it, fresh] = out_index.emplace(node, static_cast<int>(mesh.vertices.size()));
+      if (fresh) {
+        if (node >= 0) {
+          mesh.vertices.push_back(mc.centers[node]);
+          mesh.radius.push_back(mc.radii[node]);
+        } else {
+          mesh.vertices.push_back(samples.points[-node - 1]);
+          mesh.radius.push_back(0.0);  // a sample on the boundary: its medial ball has radius 0
+        }
+      }
+      poly.push_back(it->second);
+    }
+    mesh.add_face(poly, mc.kind[f], solid_index);
+  }
+  // A medial axis that is a point (a sphere's centre) has no faces: keep its vertex.
+  if (mesh.num_faces() == 0) {
+    for (int node : mc.points) {
+      if (!inside[node] || !out_index.emplace(node, static_cast<int>(mesh.vertices.size())).second) continue;
+      mesh.vertices.push_back(mc.centers[node]);
+      mesh.radius.push_back(mc.radii[node]);
+    }
+  }
+  st.dropped_faces = mc.size() - mesh.num_faces();
+  return mesh;
+}
+
+}  // namespace
+
+MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const MedialParams& params,
+                       const InsideTest& inside, int solid_index, MedialAxisStats* stats_out,
+                       const Progress& progress) {
+  MedialAxisStats st;
+  auto t0 = Clock::now();
+  Delaunay dt;
+  {
+    std::vector<std::pair<K::Point_3, int>> pts;
+    pts.reserve(samples.size());
+    for (size_t i = 0; i < samples.size(); ++i)
+      pts.push_back({K::Point_3(samples.points[i][0], samples.points[i][1], samples.points[i][2]), static_cast<int>(i)});
+    dt.insert(pts.begin(), pts.end());
+  }
+  // Samples that coincide with another keep no vertex of their own.
+  std::vector<Vertex> handle(samples.size());
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) handle[v->info()] = v;
+  st.timings.push_back({"delaunay", seconds_since(t0)});
+  report(progress, "selection", 0.0);
+
+  t0 = Clock::now();
+  const Selection sel(samples, umbrellas, params);
+  MedialComplex mc;
+  select_facets(dt, sel, mc, st, progress);
+  st.timings.push_back({"selection", seconds_since(t0)});
+
+  t0 = Clock::now();
+  complete_convex_edges(dt, handle, samples, mc, st);
+  complete_corners(dt, handle, samples, sel, mc, st);
+  st.timings.push_back({"completion", seconds_since(t0)});
+  report(progress, "inner", 0.0);
+
+  t0 = Clock::now();
+  {
+    double diag2 = 0;
+    const auto& pts = samples.points;
+    Point3 lo = pts.empty() ? Point3{0, 0, 0} : pts[0], hi = lo;
+    for (const Point3& p : pts)
+      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+    diag2 = dot(sub(hi, lo), sub(hi, lo));
+    merge_coincident_cells(mc, 1e-9 * std::sqrt(diag2));
+  }
+  const std::vector<std::uint8_t> in = label_inside(mc, samples, inside, st);
+  MedialMesh mesh = extract_inner(mc, in, samples, solid_index, st);
+  st.timings.push_back({"inner", seconds_since(t0)});
+  if (stats_out) *stats_out = st;
+  return mesh;
+}
+
+double bare_delaunay_seconds(const std::vector<Point3>& points) {
+  std::vector<K::Point_3> pts;
+  pts.reserve(points.size());
+  for (const Point3& p : points) pts.emplace_back(p[0], p[1], p[2]);
+  const auto t0 = Clock::now();
+  CGAL::Delaunay_triangulation_3<K> dt(pts.begin(), pts.end());
+  const double s = seconds_since(t0);
+  if (dt.number_of_vertices() == 0 && !points.empty()) throw GeometryError("Delaunay failed");
+  return s;
+}
+
+}  // namespace cadmedial

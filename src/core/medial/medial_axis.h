@@ -1,0 +1,39 @@
+// The medial stages of CAD_MEDIAL after sampling: Delaunay (CGAL, exact predicates), Angle/Ratio
+// selection against the umbrellas (3, 4.2.6), ProcConvexEdges (4.2.2), ProcNonconcaveCorners
+// (4.2.3) and the inner medial axis (4.2.5). CGAL types stay inside medial/*.cpp.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "../progress.h"
+#include "../sampling/samples.h"
+#include "../types.h"
+#include "reconstruct_faces.h"
+
+namespace cadmedial {
+
+/// Exact inside test for a batch of points: 1 inside the solid, 0 outside (on the boundary counts
+/// as inside). Supplied by the caller, who holds the B-rep.
+using InsideTest = std::function<std::vector<std::uint8_t>(const std::vector<Point3>&)>;
+
+struct MedialAxisStats {
+  Timings timings;                   ///< delaunay, selection, completion, inner
+  std::size_t selected_facets = 0;   ///< Voronoi facets passing Angle or Ratio (before separation)
+  std::size_t edge_triangles = 0;
+  std::size_t corner_triangles = 0;
+  std::size_t exact_inside_tests = 0;
+  std::size_t dropped_faces = 0;     ///< outside the solid, unbounded, or in stray pieces
+  std::size_t components = 0;        ///< pieces of the inner axis before stray ones are dropped
+};
+
+/// The inner medial axis of one solid from its samples and umbrellas. Faces get `solid_index`.
+MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const MedialParams& params,
+                       const InsideTest& inside, int solid_index, MedialAxisStats* stats = nullptr,
+                       const Progress& progress = {});
+
+/// Seconds for CGAL's Delaunay triangulation of these points alone (the benchmark's yardstick).
+double bare_delaunay_seconds(const std::vector<Point3>& points);
+
+}  // namespace cadmedial

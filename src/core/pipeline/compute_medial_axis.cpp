@@ -1,0 +1,204 @@
+#include "compute_medial_axis.h"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <Bnd_Box.hxx>
+#include <BRepBndLib.hxx>
+#include <Standard_Failure.hxx>
+#include <gp_Pnt.hxx>
+
+#include "../errors.h"
+#include "../features/classify_features.h"
+#include "../io/read_shape.h"
+#include "../medial/medial_axis.h"
+#include "../medial/reconstruct_faces.h"
+#include "../sampling/sample_solid.h"
+
+namespace cadmedial {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// More samples than this would need more memory than a workstation has (CGAL's Delaunay takes
+// roughly 1 KiB per sample with our data); refuse before trying.
+constexpr double kMaxSamples = 2.0e7;
+
+// Face samples per unit area at spacing h: the thinning keeps samples at least h apart, which
+// packs about one sample per 0.85 h^2 (measured on planar faces).
+constexpr double kAreaPerSample = 0.85;
+
+struct Measure {
+  double area = 0, sharp = 0, convex = 0, diag = 0;
+};
+
+Measure measure(const std::vector<TopoDS_Solid>& solids) {
+  Measure m;
+  Bnd_Box box;
+  for (const TopoDS_Solid& s : solids) {
+    const Features f = classify_features(s);
+    const SolidMeasure sm = measure_solid(s, f);
+    m.area += sm.area;
+    m.sharp += sm.sharp_edge_length;
+    m.convex += sm.convex_edge_length;
+    BRepBndLib::Add(s, box);
+  }
+  if (!box.IsVoid()) m.diag = std::sqrt(box.SquareExtent());
+  return m;
+}
+
+// Samples at spacing h: faces, sharp edges at h/2, two triplet points per convex-edge sample.
+double estimate_samples(const Measure& m, double h) {
+  return m.area / (kAreaPerSample * h * h) + (m.sharp + 2.0 * m.convex) / (0.5 * h);
+}
+
+double spacing_for(const Measure& m, double n) {
+  // Solve a x^2 + b x = n for x = 1/h.
+  const double a = m.area / kAreaPerSample, b = 2.0 * (m.sharp + 2.0 * m.convex);
+  if (a <= 0) return m.diag > 0 ? m.diag / 100 : 1.0;
+  const double x = (-b + std::sqrt(b * b + 4 * a * n)) / (2 * a);
+  return 1.0 / x;
+}
+
+SamplingPlan plan(const Measure& m, const SamplingParams& params) {
+  SamplingPlan p;
+  if (params.spacing > 0) {
+    p.spacing = params.spacing;
+  } else {
+    const double n = params.target_samples > 0 ? static_cast<double>(params.target_samples)
+                                               : static_cast<double>(SamplingParams::default_target_samples);
+    p.spacing = spacing_for(m, n);
+  }
+  const double est = estimate_samples(m, p.spacing);
+  if (est > kMaxSamples) {
+    throw InvalidInput("spacing " + std::to_string(p.spacing) + " would need about " +
+                       std::to_string(static_cast<long long>(est)) + " samples, more than the limit of " +
+                       std::to_string(static_cast<long long>(kMaxSamples)) + "; use --spacing " +
+                       std::to_string(spacing_for(m, kMaxSamples)) + " or more");
+  }
+  p.estimated_samples = static_cast<std::size_t>(std::llround(est));
+  return p;
+}
+
+void add_timing(Timings& timings, const std::string& stage, double s) {
+  for (auto& [name, value] : timings)
+    if (name == stage) {
+      value += s;
+      return;
+    }
+  timings.push_back({stage, s});
+}
+
+}  // namespace
+
+void check_params(const ComputeParams& params) {
+  const double h = params.sampling.spacing;
+  if (!std::isfinite(h) || h < 0) throw InvalidInput("spacing must be a positive finite number, got " + std::to_string(h));
+  if (h > 0 && params.sampling.target_samples > 0) throw InvalidInput("give either spacing or samples, not both");
+  if (params.sampling.target_samples > static_cast<std::size_t>(kMaxSamples))
+    throw InvalidInput("samples must be at most " + std::to_string(static_cast<long long>(kMaxSamples)));
+  if (params.sampling.target_samples > 0 && params.sampling.target_samples < 100)
+    throw InvalidInput("samples must be at least 100, got " + std::to_string(params.sampling.target_samples));
+  const double theta = params.medial.theta_deg;
+  if (!std::isfinite(theta) || theta <= 0 || theta >= 90)
+    throw InvalidInput("theta must be in (0, 90) degrees, got " + std::to_string(theta));
+  const double rho = params.medial.rho;
+  if (!std::isfinite(rho) || rho <= 0) throw InvalidInput("rho must be a positive finite number, got " + std::to_string(rho));
+}
+
+SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& params) {
+  ComputeParams p;
+  p.sampling = params;
+  check_params(p);
+  try {
+    return plan(measure(extract_solids(shape)), params);
+  } catch (const Standard_Failure& err) {
+    throw GeometryError(std::string("cannot measure the shape: ") + err.GetMessageString());
+  }
+}
+
+ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams& params, const Progress& progress) {
+  check_params(params);
+  const auto t_total = Clock::now();
+  ComputeResult result;
+  ComputeStats& stats = result.stats;
+  try {
+    auto t0 = Clock::now();
+    report(progress, "reading", 0.0);
+    const std::vector<TopoDS_Solid> solids = extract_solids(shape);
+    const Measure m = measure(solids);
+    const SamplingPlan sp = plan(m, params.sampling);
+    stats.spacing = sp.spacing;
+    add_timing(stats.timings, "setup", seconds_since(t0));
+    const int n = static_cast<int>(solids.size());
+    for (int i = 0; i < n; ++i) {
+      const TopoDS_Solid& solid = solids[i];
+      // Stage fractions are per solid; spread them over the solids.
+      const Progress sub = progress ? Progress([&, i](const std::string& stage, double f) {
+        return progress(stage, (i + std::clamp(f, 0.0, 1.0)) / n);
+      })
+                                    : Progress();
+      SolidStats ss;
+      t0 = Clock::now();
+      report(sub, "features", 0.0);
+      const Features features = classify_features(solid);
+      for (size_t e = 0; e < features.edge_kind.size(); ++e) {
+        const EdgeKind k = features.edge_kind[e];
+        ss.convex_edges += k == EdgeKind::Convex || k == EdgeKind::Mixed;
+        ss.concave_edges += k == EdgeKind::Concave;
+        ss.smooth_edges += k == EdgeKind::Smooth;
+      }
+      for (bool c : features.nonconcave_corner) ss.nonconcave_corners += c;
+      add_timing(stats.timings, "features", seconds_since(t0));
+
+      t0 = Clock::now();
+      report(sub, "sampling", 0.0);
+      const Samples samples = sample_solid(solid, features, sp.spacing, sub);
+      ss.samples = samples.size();
+      add_timing(stats.timings, "sampling", seconds_since(t0));
+
+      t0 = Clock::now();
+      report(sub, "reconstruction", 0.0);
+      const Umbrellas umbrellas = reconstruct_faces(samples, sub);
+      add_timing(stats.timings, "reconstruction", seconds_since(t0));
+
+      // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt.
+      BRepClass3d_SolidClassifier classifier(solid);
+      const double tol = 1e-7 * std::max(m.diag, 1e-9);
+      InsideTest inside = [&](const std::vector<Point3>& pts) {
+        std::vector<std::uint8_t> out(pts.size());
+        for (size_t k = 0; k < pts.size(); ++k) {
+          classifier.Perform(gp_Pnt(pts[k][0], pts[k][1], pts[k][2]), tol);
+          const TopAbs_State s = classifier.State();
+          out[k] = (s == TopAbs_IN || s == TopAbs_ON) ? 1 : 0;
+        }
+        return out;
+      };
+      MedialAxisStats ms;
+      const MedialMesh mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, sub);
+      for (const auto& [stage, s] : ms.timings) add_timing(stats.timings, stage, s);
+      ss.vertices = mesh.num_vertices();
+      ss.faces = mesh.num_faces();
+      ss.dropped_faces = ms.dropped_faces;
+      stats.samples += ss.samples;
+      stats.solids.push_back(ss);
+      result.mesh.append(mesh);
+    }
+  } catch (const Standard_Failure& err) {
+    throw GeometryError(std::string("OpenCASCADE failed: ") + err.GetMessageString());
+  } catch (const std::bad_alloc&) {
+    throw GeometryError("out of memory; use a larger spacing or fewer samples");
+  }
+  stats.vertices = result.mesh.num_vertices();
+  stats.faces = result.mesh.num_faces();
+  report(progress, "done", 1.0);
+  stats.timings.push_back({"total", seconds_since(t_total)});
+  stats.peak_rss_mb = peak_rss_mb();
+  return result;
+}
+
+}  // namespace cadmedial

@@ -1,0 +1,83 @@
+// The statistics of a run as JSON, written by hand: the schema is small and fixed, and a JSON
+// library would be a dependency for one function.
+#include <sys/resource.h>
+
+#include <charconv>
+#include <cmath>
+#include <string>
+
+#include "compute_medial_axis.h"
+
+namespace cadmedial {
+namespace {
+
+// JSON has no NaN or infinity: write null rather than an invalid document.
+std::string number(double x) {
+  if (!std::isfinite(x)) return "null";
+  char buf[32];
+  auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (c < 0x20) {
+          static const char hex[] = "0123456789abcdef";
+          out += "\\u00";
+          out += hex[c >> 4];
+          out += hex[c & 15];
+        } else {
+          out += static_cast<char>(c);
+        }
+    }
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string stats_to_json(const ComputeStats& stats) {
+  std::string j = "{\n";
+  j += "  \"samples\": " + std::to_string(stats.samples) + ",\n";
+  j += "  \"vertices\": " + std::to_string(stats.vertices) + ",\n";
+  j += "  \"faces\": " + std::to_string(stats.faces) + ",\n";
+  j += "  \"spacing\": " + number(stats.spacing) + ",\n";
+  j += "  \"timings\": {";
+  for (std::size_t i = 0; i < stats.timings.size(); ++i)
+    j += (i ? ", " : "") + quoted(stats.timings[i].first) + ": " + number(stats.timings[i].second);
+  j += "},\n";
+  j += "  \"peak_rss_mb\": " + number(stats.peak_rss_mb) + ",\n";
+  j += "  \"solids\": [";
+  for (std::size_t i = 0; i < stats.solids.size(); ++i) {
+    const SolidStats& s = stats.solids[i];
+    j += i ? ",\n    {" : "\n    {";
+    j += "\"samples\": " + std::to_string(s.samples);
+    j += ", \"vertices\": " + std::to_string(s.vertices);
+    j += ", \"faces\": " + std::to_string(s.faces);
+    j += ", \"convex_edges\": " + std::to_string(s.convex_edges);
+    j += ", \"concave_edges\": " + std::to_string(s.concave_edges);
+    j += ", \"smooth_edges\": " + std::to_string(s.smooth_edges);
+    j += ", \"nonconcave_corners\": " + std::to_string(s.nonconcave_corners);
+    j += ", \"dropped_faces\": " + std::to_string(s.dropped_faces);
+    j += "}";
+  }
+  j += stats.solids.empty() ? "]\n" : "\n  ]\n";
+  j += "}\n";
+  return j;
+}
+
+double peak_rss_mb() {
+  struct rusage usage {};
+  if (getrusage(RUSAGE_SELF, &usage) != 0) return 0.0;
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
+}
+
+}  // namespace cadmedial

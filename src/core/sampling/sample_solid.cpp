@@ -1,0 +1,502 @@
+// 4.2.1 Sampling. The order matters: corners, ball points and edge samples first, then triplets,
+// then face interiors, which keep clear of everything placed before them.
+#include "sample_solid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <unordered_map>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepGProp.hxx>
+#include <BRepLProp_SLProps.hxx>
+#include <BRepTools.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
+#include <BRep_Tool.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <GProp_GProps.hxx>
+#include <Geom2d_Curve.hxx>
+#include <GeomLProp_CLProps.hxx>
+#include <Geom_Curve.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
+
+#include "../errors.h"
+#include "point_grid.h"
+
+namespace cadmedial {
+
+SampleSpacing sample_spacing(double spacing) {
+  SampleSpacing s;
+  s.face = spacing;
+  s.edge = 0.5 * spacing;     // sharp features are sampled conservatively (4.2.1)
+  s.triplet = 0.5 * spacing;  // legs s-s_l, s-s_r: at most the face spacing keeps s s_l s_r Delaunay
+  s.min_face = spacing / 8.0;
+  // Chords on a curve turn by at most 4 degrees, so that a Delaunay edge between near neighbours
+  // on a curved face that the reconstruction did not keep still fails the Angle condition at
+  // theta = 5 degrees (section 3). Measured on a cylinder R = 1, h = 0.1: at 8 degrees spurious
+  // fins reached 0.3 R from the axis, at 4 degrees 0.16 R, at 3 degrees 0.09 R.
+  s.max_turn_rad = 4.0 * 3.14159265358979323846 / 180.0;
+  return s;
+}
+
+namespace {
+
+Point3 to_point(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
+Point3 to_point(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
+
+struct ChainPoint {
+  int sample;
+  double t;
+};
+
+class Sampler {
+ public:
+  Sampler(const TopoDS_Solid& solid, const Features& f, double spacing, const Progress& progress)
+      : solid_(solid), f_(f), sp_(sample_spacing(spacing)), progress_(progress), grid_(spacing) {
+    out_.spacing = spacing;
+  }
+
+  Samples run() {
+    sample_corners();
+    sample_edges();
+    report(progress_, "sampling", 0.1);
+    sample_triplets();
+    sample_faces();
+    return std::move(out_);
+  }
+
+ private:
+  int add(const Point3& p, SampleTag tag, double exclusion = 0.0) {
+    const int id = static_cast<int>(out_.points.size());
+    out_.points.push_back(p);
+    out_.tag.push_back(tag);
+    out_.normal.push_back({0, 0, 0});
+    out_.face.push_back(-1);
+    out_.edge.push_back(-1);
+    out_.vertex.push_back(-1);
+    out_.nonconcave.push_back(0);
+    exclusion_.push_back(exclusion);
+    grid_.insert(p, id);
+    return id;
+  }
+
+  bool is_sharp(int e) const {
+    const EdgeKind k = f_.edge_kind[e];
+    return k == EdgeKind::Convex || k == EdgeKind::Concave || k == EdgeKind::Mixed;
+  }
+
+  // Ball radius around a sharp corner: below the minimum size, conservatively a fraction of the
+  // shortest incident edge (4.2.1: "we avoided computing the minimum size ... conservative").
+  void sample_corners() {
+    const int nv = f_.vertices.Extent();
+    corner_sample_.assign(nv, -1);
+    ball_radius_.assign(nv, 0.0);
+    std::vector<double> shortest(nv, 1e300);
+    for (int e = 0; e < f_.edges.Extent(); ++e) {
+      const TopoDS_Edge& edge = TopoDS::Edge(f_.edges(e + 1));
+      if (BRep_Tool::Degenerated(edge)) continue;
+      const double len = GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(edge));
+      edge_length_.push_back(len);
+      TopoDS_Vertex a, b;
+      TopExp::Vertices(edge, a, b);
+      for (const TopoDS_Vertex& v : {a, b}) {
+        if (v.IsNull()) continue;
+        const int vi = f_.vertices.FindIndex(v) - 1;
+        shortest[vi] = std::min(shortest[vi], len);
+      }
+    }
+    for (int v = 0; v < nv; ++v) {
+      const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(f_.vertices(v + 1)));
+      if (f_.sharp_vertex[v]) ball_radius_[v] = std::min(sp_.edge, 0.3 * shortest[v]);
+      const int id = add(to_point(p), SampleTag::Corner, ball_radius_[v]);
+      out_.vertex[id] = v;
+      out_.nonconcave[id] = f_.nonconcave_corner[v] ? 1 : 0;
+      corner_sample_[v] = id;
+    }
+  }
+
+  // The largest spacing along an edge that keeps chords within max_turn_rad of the curve.
+  double curve_spacing(const BRepAdaptor_Curve& curve, double base) const {
+    double kmax = 0;
+    const double a = curve.FirstParameter(), b = curve.LastParameter();
+    for (int i = 0; i <= 16; ++i) {
+      gp_Pnt p;
+      gp_Vec d1, d2;
+      curve.D2(a + (b - a) * i / 16.0, p, d1, d2);
+      const double n1 = d1.Magnitude();
+      if (n1 > 1e-300) kmax = std::max(kmax, d1.Crossed(d2).Magnitude() / (n1 * n1 * n1));
+    }
+    double h = base;
+    if (kmax > 0) h = std::min(h, sp_.max_turn_rad / kmax);
+    return std::max(h, 0.25 * sp_.min_face);
+  }
+
+  void sample_edges() {
+    const int ne = f_.edges.Extent();
+    chains_.assign(ne, {});
+    for (int e = 0; e < ne; ++e) {
+      const TopoDS_Edge& edge = TopoDS::Edge(f_.edges(e + 1));
+      TopoDS_Vertex va, vb;
+      TopExp::Vertices(edge, va, vb);
+      const int ia = va.IsNull() ? -1 : f_.vertices.FindIndex(va) - 1;
+      const int ib = vb.IsNull() ? -1 : f_.vertices.FindIndex(vb) - 1;
+      double t0 = 0, t1 = 0;
+      BRep_Tool::Range(edge, t0, t1);
+      auto& chain = chains_[e];
+      if (ia >= 0) chain.push_back({corner_sample_[ia], t0});
+      if (BRep_Tool::Degenerated(edge)) {
+        if (ib >= 0) chain.push_back({corner_sample_[ib], t1});
+        continue;
+      }
+      try {
+        BRepAdaptor_Curve curve(edge);
+        const bool sharp = is_sharp(e);
+        const double h = curve_spacing(curve, sharp ? sp_.edge : sp_.face);
+        const double excl = f_.edge_kind[e] == EdgeKind::Convex || f_.edge_kind[e] == EdgeKind::Mixed ? 1.05 * sp_.triplet : 0.0;
+        const double len = GCPnts_AbscissaPoint::Length(curve, t0, t1);
+        // 4.2.1 ball rule: the ball around a sharp corner meets the edge in one sample, and no
+        // other sample lies inside the ball.
+        const double ra = ia >= 0 ? ball_radius_[ia] : 0.0, rb = ib >= 0 ? ball_radius_[ib] : 0.0;
+        double a = t0, b = t1;
+        std::vector<std::pair<double, SampleTag>> params;
+        if (ra > 0 && ra < 0.5 * len) {
+          a = GCPnts_AbscissaPoint(curve, ra, t0).Parameter();
+          params.push_back({a, SampleTag::Ball});
+        }
+        const double rest_b = rb > 0 && rb < 0.5 * len ? rb : 0.0;
+        if (rest_b > 0) b = GCPnts_AbscissaPoint(curve, -rb, t1).Parameter();
+        const double inner = GCPnts_AbscissaPoint::Length(curve, a, b);
+        const int n = std::max(1, static_cast<int>(std::ceil(inner / h)));
+        for (int i = 1; i < n; ++i) {
+          const double ti = GCPnts_AbscissaPoint(curve, inner * i / n, a).Parameter();
+          params.push_back({ti, SampleTag::Edge});
+        }
+        if (rest_b > 0) params.push_back({b, SampleTag::Ball});
+        for (const auto& [t, tag] : params) {
+          const int id = add(to_point(curve.Value(t)), tag, excl);
+          out_.edge[id] = e;
+          chain.push_back({id, t});
+        }
+      } catch (const Standard_Failure& err) {
+        throw GeometryError("edge " + std::to_string(e + 1) + ": cannot sample: " + err.GetMessageString());
+      }
+      if (ib >= 0) chain.push_back({corner_sample_[ib], t1});
+    }
+  }
+
+  // A point on face `fi` at distance d from p, in the plane through p normal to the edge tangent
+  // T, starting from uv0 along `dir` (4.2.1: s_l s and s_r s perpendicular to e, equal lengths).
+  bool point_on_face_at(int fi, const gp_Pnt& p, const gp_Vec& tangent, const gp_Vec& dir, const gp_Pnt2d& uv0,
+                        double d, gp_Pnt2d& uv, gp_Pnt& q) {
+    const BRepAdaptor_Surface& surf = surface(fi);
+    double u = uv0.X(), v = uv0.Y();
+    gp_Pnt s;
+    gp_Vec su, sv;
+    surf.D1(u, v, s, su, sv);
+    // Initial guess: solve [su sv] (du dv) = d*dir in least squares.
+    {
+      const double a = su.Dot(su), b = su.Dot(sv), c = sv.Dot(sv);
+      const double ru = su.Dot(dir) * d, rv = sv.Dot(dir) * d;
+      const double det = a * c - b * b;
+      if (std::abs(det) < 1e-300) return false;
+      u += (c * ru - b * rv) / det;
+      v += (a * rv - b * ru) / det;
+    }
+    for (int it = 0; it < 30; ++it) {
+      surf.D1(u, v, s, su, sv);
+      const gp_Vec w(p, s);
+      const double f1 = w.Dot(tangent), f2 = w.Dot(w) - d * d;
+      if (std::abs(f1) < 1e-10 * d && std::abs(f2) < 1e-10 * d * d) break;
+      const double j11 = su.Dot(tangent), j12 = sv.Dot(tangent);
+      const double j21 = 2 * w.Dot(su), j22 = 2 * w.Dot(sv);
+      const double det = j11 * j22 - j12 * j21;
+      if (std::abs(det) < 1e-300) return false;
+      u -= (j22 * f1 - j12 * f2) / det;
+      v -= (-j21 * f1 + j11 * f2) / det;
+    }
+    surf.D0(u, v, s);
+    const gp_Vec w(p, s);
+    if (std::abs(w.Magnitude() - d) > 1e-6 * d || w.Dot(dir) <= 0.5 * d) return false;
+    uv = gp_Pnt2d(u, v);
+    q = s;
+    return classifier(fi).Perform(uv) == TopAbs_IN;
+  }
+
+  gp_Vec outward_normal(int fi, double u, double v) {
+    gp_Pnt p;
+    gp_Vec su, sv;
+    surface(fi).D1(u, v, p, su, sv);
+    gp_Vec n = su.Crossed(sv);
+    if (n.Magnitude() < 1e-300) return gp_Vec(0, 0, 0);
+    n.Normalize();
+    if (f_.faces(fi + 1).Orientation() == TopAbs_REVERSED) n.Reverse();
+    return n;
+  }
+
+  // 4.2.1 triplets: for every sample s on a convex edge, s_l and s_r on the two faces.
+  void sample_triplets() {
+    for (int e = 0; e < f_.edges.Extent(); ++e) {
+      const EdgeKind kind = f_.edge_kind[e];
+      if (kind != EdgeKind::Convex && kind != EdgeKind::Mixed) continue;
+      const auto& chain = chains_[e];
+      for (size_t i = 0; i < chain.size(); ++i) {
+        const int s = chain[i].sample;
+        if (out_.tag[s] == SampleTag::Corner) continue;
+        EdgePoint ep;
+        try {
+          ep = edge_point(f_, e, chain[i].t);
+        } catch (const std::exception&) {
+          continue;
+        } catch (const Standard_Failure&) {
+          continue;
+        }
+        if (ep.kind != PointKind::Convex) continue;
+        const double d = sp_.triplet;
+        int side[2] = {-1, -1};
+        gp_Pnt2d uv[2];
+        gp_Pnt q[2];
+        bool ok = true;
+        for (int k = 0; k < 2 && ok; ++k) {
+          const int fi = f_.edge_faces[e][k];
+          ok = point_on_face_at(fi, ep.point, ep.tangent, ep.inward[k], ep.uv[k], d, uv[k], q[k]);
+          // Keep clear of samples from other edges: near a corner two edges' triplets meet. At a
+          // right-angled corner they meet exactly, and then share the point.
+          if (ok)
+            ok = !grid_.any_near(to_point(q[k]), 0.5 * d, [&](int id) {
+              if (id == s) return false;
+              const double d2 = distance2(out_.points[id], to_point(q[k]));
+              if (d2 < 1e-12 * d * d && out_.tag[id] == SampleTag::Triplet && out_.face[id] == fi) {
+                side[k] = id;
+                return false;
+              }
+              return d2 < 0.25 * d * d;
+            });
+        }
+        if (!ok) continue;
+        for (int k = 0; k < 2; ++k) {
+          const int fi = f_.edge_faces[e][k];
+          if (side[k] >= 0) continue;
+          side[k] = add(to_point(q[k]), SampleTag::Triplet);
+          out_.face[side[k]] = fi;
+          out_.normal[side[k]] = to_point(outward_normal(fi, uv[k].X(), uv[k].Y()));
+          face_points_[fi].push_back({side[k], {uv[k].X(), uv[k].Y()}});
+        }
+        Triplet tr;
+        tr.s = s;
+        tr.sl = side[0];
+        tr.sr = side[1];
+        tr.prev = i > 0 ? chain[i - 1].sample : -1;
+        tr.next = i + 1 < chain.size() ? chain[i + 1].sample : -1;
+        out_.triplets.push_back(tr);
+      }
+    }
+  }
+
+  const BRepAdaptor_Surface& surface(int fi) {
+    auto& s = surfaces_[fi];
+    if (!s) s = std::make_unique<BRepAdaptor_Surface>(TopoDS::Face(f_.faces(fi + 1)), Standard_False);
+    return *s;
+  }
+  const BRepTopAdaptor_FClass2d& classifier(int fi) {
+    auto& c = classifiers_[fi];
+    if (!c) c = std::make_unique<BRepTopAdaptor_FClass2d>(TopoDS::Face(f_.faces(fi + 1)), 1e-9);
+    return *c;
+  }
+
+  // Face interiors: a jittered grid in the parameter plane, fine enough in space, thinned to the
+  // local spacing in space (not in parameters), which shrinks where the surface curves.
+  void sample_faces() {
+    const int nf = f_.faces.Extent();
+    out_.faces.resize(nf);
+    std::mt19937_64 rng(12345);
+    std::uniform_real_distribution<double> jitter(-0.35, 0.35);
+    for (int fi = 0; fi < nf; ++fi) {
+      report(progress_, "sampling", 0.2 + 0.8 * fi / std::max(1, nf));
+      try {
+        sample_face(fi, rng, jitter);
+      } catch (const Standard_Failure& err) {
+        throw GeometryError("face " + std::to_string(fi + 1) + ": cannot sample: " + err.GetMessageString());
+      }
+    }
+  }
+
+  void sample_face(int fi, std::mt19937_64& rng, std::uniform_real_distribution<double>& jitter) {
+    const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
+    const BRepAdaptor_Surface& surf = surface(fi);
+    const BRepTopAdaptor_FClass2d& cls = classifier(fi);
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    const bool planar = surf.GetType() == GeomAbs_Plane;
+    // Probe the metric and curvature.
+    constexpr int kProbe = 12;
+    double su_max = 0, sv_max = 0, su_sum = 0, sv_sum = 0, k_max = 0;
+    BRepLProp_SLProps props(surf, 2, 1e-9);
+    for (int i = 0; i <= kProbe; ++i)
+      for (int j = 0; j <= kProbe; ++j) {
+        const double u = u0 + (u1 - u0) * i / kProbe, v = v0 + (v1 - v0) * j / kProbe;
+        gp_Pnt p;
+        gp_Vec su, sv;
+        surf.D1(u, v, p, su, sv);
+        su_max = std::max(su_max, su.Magnitude());
+        sv_max = std::max(sv_max, sv.Magnitude());
+        su_sum += su.Magnitude();
+        sv_sum += sv.Magnitude();
+        if (!planar) {
+          props.SetParameters(u, v);
+          if (props.IsCurvatureDefined())
+            k_max = std::max({k_max, std::abs(props.MaxCurvature()), std::abs(props.MinCurvature())});
+        }
+      }
+    FaceDomain& dom = out_.faces[fi];
+    const double np = (kProbe + 1.0) * (kProbe + 1.0);
+    dom.u_scale = std::max(su_sum / np, 1e-300);
+    dom.v_scale = std::max(sv_sum / np, 1e-300);
+    const double r_min = k_max > 0 ? std::clamp(sp_.max_turn_rad / k_max, sp_.min_face, sp_.face) : sp_.face;
+    // Candidate step: half the smallest local spacing, in space.
+    const double step = 0.5 * r_min;
+    long nu = std::max(1L, static_cast<long>(std::ceil((u1 - u0) * su_max / step)));
+    long nvv = std::max(1L, static_cast<long>(std::ceil((v1 - v0) * sv_max / step)));
+    constexpr double kMaxCandidates = 8e6;
+    if (static_cast<double>(nu) * nvv > kMaxCandidates) {
+      const double shrink = std::sqrt(kMaxCandidates / (static_cast<double>(nu) * nvv));
+      nu = std::max(1L, static_cast<long>(nu * shrink));
+      nvv = std::max(1L, static_cast<long>(nvv * shrink));
+    }
+    const double du = (u1 - u0) / nu, dv = (v1 - v0) / nvv;
+    for (long i = 0; i < nu; ++i) {
+      for (long j = 0; j < nvv; ++j) {
+        const double u = u0 + du * (i + 0.5 + jitter(rng)), v = v0 + dv * (j + 0.5 + jitter(rng));
+        if (cls.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
+        gp_Pnt p;
+        gp_Vec su, sv;
+        surf.D1(u, v, p, su, sv);
+        gp_Vec n = su.Crossed(sv);
+        if (n.Magnitude() < 1e-300) continue;  // singular point: the vertex sample covers it
+        double r = sp_.face;
+        if (!planar) {
+          props.SetParameters(u, v);
+          if (props.IsCurvatureDefined()) {
+            const double k = std::max(std::abs(props.MaxCurvature()), std::abs(props.MinCurvature()));
+            if (k > 0) r = std::clamp(sp_.max_turn_rad / k, sp_.min_face, sp_.face);
+          }
+        }
+        const Point3 c = to_point(p);
+        const bool crowded = grid_.any_near(c, std::max(r, sp_.edge), [&](int id) {
+          const double ex = std::max(r, exclusion_[id]);
+          return distance2(out_.points[id], c) < ex * ex;
+        });
+        if (crowded) continue;
+        n.Normalize();
+        if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
+        const int id = add(c, SampleTag::Face);
+        out_.face[id] = fi;
+        out_.normal[id] = to_point(n);
+        face_points_[fi].push_back({id, {u, v}});
+      }
+    }
+    build_domain(fi);
+  }
+
+  // The face's points in its parameter plane: boundary chains (seams twice, degenerate edges as
+  // copies of their vertex) with their segments, then the interior and triplet samples.
+  void build_domain(int fi) {
+    const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
+    const TopoDS_Face fwd = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+    FaceDomain& dom = out_.faces[fi];
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    const double tol = 1e-7 * std::max({u1 - u0, v1 - v0, 1e-12});
+    auto local = [&](int sample, double u, double v) {
+      // Chains of adjacent edges meet at a corner: one local point per (sample, uv).
+      for (size_t k = dom.sample.size(); k-- > 0;) {
+        if (dom.sample[k] == sample && std::abs(dom.uv[k][0] - u) < tol && std::abs(dom.uv[k][1] - v) < tol)
+          return static_cast<int>(k);
+        if (dom.sample.size() - k > 64) break;
+      }
+      for (size_t k = 0; k < std::min<size_t>(dom.sample.size(), 64); ++k)
+        if (dom.sample[k] == sample && std::abs(dom.uv[k][0] - u) < tol && std::abs(dom.uv[k][1] - v) < tol)
+          return static_cast<int>(k);
+      dom.sample.push_back(sample);
+      dom.uv.push_back({u, v});
+      return static_cast<int>(dom.sample.size() - 1);
+    };
+    for (TopExp_Explorer ex(fwd, TopAbs_EDGE); ex.More(); ex.Next()) {
+      const TopoDS_Edge& edge = TopoDS::Edge(ex.Current());
+      const int e = f_.edges.FindIndex(edge) - 1;
+      double a = 0, b = 0;
+      Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, fwd, a, b);
+      if (pc.IsNull()) continue;
+      const auto& chain = chains_[e];
+      std::vector<int> ids;
+      if (BRep_Tool::Degenerated(edge)) {
+        // A pole or apex: one 3D point, a segment in the parameter plane.
+        if (chain.empty()) continue;
+        constexpr int kCopies = 16;
+        for (int i = 0; i <= kCopies; ++i) {
+          const gp_Pnt2d uv = pc->Value(a + (b - a) * i / kCopies);
+          ids.push_back(local(chain.front().sample, uv.X(), uv.Y()));
+        }
+      } else {
+        for (const ChainPoint& cp : chain) {
+          const gp_Pnt2d uv = pc->Value(cp.t);
+          ids.push_back(local(cp.sample, uv.X(), uv.Y()));
+        }
+      }
+      for (size_t i = 0; i + 1 < ids.size(); ++i)
+        if (ids[i] != ids[i + 1]) dom.boundary.push_back({ids[i], ids[i + 1]});
+    }
+    for (const auto& [sample, uv] : face_points_[fi]) {
+      dom.sample.push_back(sample);
+      dom.uv.push_back(uv);
+    }
+  }
+
+  const TopoDS_Solid& solid_;
+  const Features& f_;
+  SampleSpacing sp_;
+  Progress progress_;
+  Samples out_;
+  PointGrid grid_;
+  std::vector<double> exclusion_;
+  std::vector<int> corner_sample_;
+  std::vector<double> ball_radius_;
+  std::vector<double> edge_length_;
+  std::vector<std::vector<ChainPoint>> chains_;
+  std::unordered_map<int, std::vector<std::pair<int, std::array<double, 2>>>> face_points_;
+  std::unordered_map<int, std::unique_ptr<BRepAdaptor_Surface>> surfaces_;
+  std::unordered_map<int, std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
+};
+
+}  // namespace
+
+Samples sample_solid(const TopoDS_Solid& solid, const Features& features, double spacing, const Progress& progress) {
+  if (!(spacing > 0) || !std::isfinite(spacing)) throw InvalidInput("spacing must be a positive number");
+  try {
+    return Sampler(solid, features, spacing, progress).run();
+  } catch (const Standard_Failure& err) {
+    throw GeometryError(std::string("sampling failed: ") + err.GetMessageString());
+  }
+}
+
+SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) {
+  SolidMeasure m;
+  GProp_GProps props;
+  BRepGProp::SurfaceProperties(solid, props);
+  m.area = props.Mass();
+  for (int e = 0; e < features.edges.Extent(); ++e) {
+    const EdgeKind k = features.edge_kind[e];
+    if (k != EdgeKind::Convex && k != EdgeKind::Concave && k != EdgeKind::Mixed) continue;
+    const double len = GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(TopoDS::Edge(features.edges(e + 1))));
+    m.sharp_edge_length += len;
+    if (k != EdgeKind::Concave) m.convex_edge_length += len;
+  }
+  return m;
+}
+
+}  // namespace cadmedial

@@ -1,0 +1,41 @@
+// Sampling of the exact B-rep as in 4.2.1: corners, the ball rule around sharp corners, edges at a
+// regular spacing, triplets across convex edges, and face interiors evenly in space.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <TopoDS_Solid.hxx>
+
+#include "../features/classify_features.h"
+#include "../progress.h"
+#include "../types.h"
+#include "samples.h"
+
+namespace cadmedial {
+
+/// Sample parameters derived from the density: spacing h of face samples; sharp edges get h/2
+/// and triplet legs h/2; curved regions shrink the spacing to keep chords within a few degrees.
+struct SampleSpacing {
+  double face = 0.0;
+  double edge = 0.0;
+  double triplet = 0.0;
+  double min_face = 0.0;     ///< floor of the curvature refinement
+  double max_turn_rad = 0.0; ///< largest angle a chord between neighbours may turn on a curve
+};
+SampleSpacing sample_spacing(double spacing);
+
+/// Samples one solid. Deterministic for a given input.
+Samples sample_solid(const TopoDS_Solid& solid, const Features& features, double spacing,
+                     const Progress& progress = {});
+
+/// Surface area of the solid's faces and the total length of its edges (for planning).
+struct SolidMeasure {
+  double area = 0.0;
+  double sharp_edge_length = 0.0;
+  double convex_edge_length = 0.0;
+};
+SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features);
+
+}  // namespace cadmedial

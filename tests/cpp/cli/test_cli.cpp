@@ -1,0 +1,224 @@
+// The cadmedial program as other tools see it: exit status, one error line on stderr, and no
+// output file after a refusal.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS_Shell.hxx>
+
+#include <algorithm>
+#include <cstdlib>
+#include <functional>
+
+#include "core/io/write_medial_mesh.h"
+#include "io/io_test_files.h"
+
+namespace cadmedial {
+namespace {
+
+using test::TempDir;
+
+struct CliRun {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+CliRun run(const TempDir& dir, const std::vector<std::string>& args) {
+  std::string cmd = quote(CADMEDIAL_CLI);
+  for (const std::string& a : args) cmd += " " + quote(a);
+  const std::string out = dir.file(".stdout"), err = dir.file(".stderr");
+  cmd += " >" + quote(out) + " 2>" + quote(err) + " </dev/null";
+  const int raw = std::system(cmd.c_str());
+  CliRun r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  r.out = test::read_file(out);
+  r.err = test::read_file(err);
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return r;
+}
+
+// Inputs, made fresh in each test's directory.
+std::string box_brep(const TempDir& dir) {
+  const std::string path = dir.file("box.brep");
+  BRepTools::Write(BRepPrimAPI_MakeBox(1, 1, 1).Shape(), path.c_str());
+  return path;
+}
+
+std::string open_shell_brep(const TempDir& dir) {
+  BRep_Builder b;
+  TopoDS_Shell shell;
+  b.MakeShell(shell);
+  int i = 0;
+  for (TopExp_Explorer fx(BRepPrimAPI_MakeBox(1, 1, 1).Shape(), TopAbs_FACE); fx.More(); fx.Next(), ++i)
+    if (i != 4) b.Add(shell, fx.Current());
+  const std::string path = dir.file("open.brep");
+  BRepTools::Write(shell, path.c_str());
+  return path;
+}
+
+// A refusal: status 2, exactly one stderr line "cadmedial: error: ...<fragment>...", nothing on
+// stdout, and no file in the directory but the inputs (no output, no temporary file).
+void expect_refusal(const std::vector<std::string>& args, const std::string& fragment,
+                    const std::function<void(const TempDir&)>& prepare = {}) {
+  TempDir dir;
+  box_brep(dir);
+  if (prepare) prepare(dir);
+  const std::vector<std::string> before = dir.entries();
+  std::vector<std::string> full;
+  for (std::string a : args) {
+    // "@/x" names a file in the test directory.
+    if (a.rfind("@/", 0) == 0) a = dir.file(a.substr(2));
+    full.push_back(a);
+  }
+  const CliRun r = run(dir, full);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("cadmedial: error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << "stderr: " << r.err << "expected: " << fragment;
+  EXPECT_EQ(r.out, "");
+  std::vector<std::string> after = dir.entries(), expected = before;
+  std::sort(after.begin(), after.end());
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(after, expected);
+}
+
+const std::vector<std::string> kCompute{"compute", "@/box.brep", "-o", "@/out.ply"};
+
+std::vector<std::string> with(std::vector<std::string> extra) {
+  std::vector<std::string> a = kCompute;
+  a.insert(a.end(), extra.begin(), extra.end());
+  return a;
+}
+
+TEST(CliRefusal, MissingInput) { expect_refusal({"compute", "@/none.step", "-o", "@/out.ply"}, "none.step: no such file"); }
+
+TEST(CliRefusal, EmptyFile) {
+  expect_refusal({"compute", "@/empty.step", "-o", "@/out.ply"}, "empty.step: the file is empty",
+                 [](const TempDir& d) { test::write_file(d.file("empty.step"), ""); });
+}
+
+TEST(CliRefusal, GarbageStep) {
+  expect_refusal({"compute", "@/junk.step", "-o", "@/out.ply"}, "junk.step: not a readable STEP file",
+                 [](const TempDir& d) { test::write_file(d.file("junk.step"), "garbage\nmore garbage;\n"); });
+}
+
+TEST(CliRefusal, GarbageBrep) {
+  expect_refusal({"compute", "@/junk.brep", "-o", "@/out.ply"}, "junk.brep: not a BREP file",
+                 [](const TempDir& d) { test::write_file(d.file("junk.brep"), "garbage\n"); });
+}
+
+TEST(CliRefusal, OpenShell) {
+  expect_refusal({"compute", "@/open.brep", "-o", "@/out.ply"}, "is bounded by 1 face (the shell is open)",
+                 [](const TempDir& d) { open_shell_brep(d); });
+}
+
+TEST(CliRefusal, UnknownOutputExtension) {
+  expect_refusal({"compute", "@/box.brep", "-o", "@/out.stl"}, "unknown output type '.stl'");
+}
+
+TEST(CliRefusal, UnwritableOutputDirectory) {
+  expect_refusal({"compute", "@/box.brep", "-o", "@/no/such/dir/out.ply"}, "does not exist");
+}
+
+TEST(CliRefusal, OutputIsADirectory) {
+  expect_refusal({"compute", "@/box.brep", "-o", "@/sub.ply"}, "is a directory",
+                 [](const TempDir& d) { std::filesystem::create_directory(d.file("sub.ply")); });
+}
+
+TEST(CliRefusal, StatsInMissingDirectory) {
+  expect_refusal(with({"--stats", "@/no/dir/s.json"}), "does not exist");
+}
+
+TEST(CliRefusal, SpacingZero) { expect_refusal(with({"--spacing", "0"}), "--spacing must be > 0"); }
+TEST(CliRefusal, SpacingNegative) { expect_refusal(with({"--spacing", "-1"}), "--spacing must be > 0"); }
+TEST(CliRefusal, SpacingNaN) { expect_refusal(with({"--spacing", "nan"}), "--spacing: 'nan' is not a finite number"); }
+TEST(CliRefusal, SpacingInf) { expect_refusal(with({"--spacing", "inf"}), "not a finite number"); }
+TEST(CliRefusal, SpacingNotANumber) { expect_refusal(with({"--spacing", "abc"}), "--spacing: 'abc' is not a number"); }
+TEST(CliRefusal, SpacingTrailingJunk) { expect_refusal(with({"--spacing", "0.5mm"}), "'0.5mm' is not a number"); }
+TEST(CliRefusal, SpacingMissingValue) { expect_refusal(with({"--spacing"}), "--spacing: missing value"); }
+TEST(CliRefusal, SamplesZero) { expect_refusal(with({"--samples", "0"}), "--samples must be > 0"); }
+TEST(CliRefusal, SamplesFractional) { expect_refusal(with({"--samples", "2.5"}), "whole number"); }
+TEST(CliRefusal, SpacingAndSamples) {
+  expect_refusal(with({"--spacing", "0.1", "--samples", "100"}), "--spacing or --samples, not both");
+}
+TEST(CliRefusal, ThetaZero) { expect_refusal(with({"--theta", "0"}), "--theta must be in (0, 90)"); }
+TEST(CliRefusal, ThetaNinety) { expect_refusal(with({"--theta", "90"}), "--theta must be in (0, 90)"); }
+TEST(CliRefusal, ThetaHundred) { expect_refusal(with({"--theta", "100"}), "--theta must be in (0, 90)"); }
+TEST(CliRefusal, RhoZero) { expect_refusal(with({"--rho", "0"}), "--rho must be > 0"); }
+TEST(CliRefusal, RhoNegative) { expect_refusal(with({"--rho", "-3"}), "--rho must be > 0"); }
+TEST(CliRefusal, UnknownOption) { expect_refusal(with({"--frobnicate"}), "unknown option '--frobnicate'"); }
+TEST(CliRefusal, MissingOutput) { expect_refusal({"compute", "@/box.brep"}, "missing -o OUTPUT"); }
+TEST(CliRefusal, UnknownCommand) { expect_refusal({"explode", "@/box.brep"}, "unknown command 'explode'"); }
+TEST(CliRefusal, NoArguments) { expect_refusal({}, "no command given"); }
+
+TEST(Cli, HelpAndVersionSucceed) {
+  TempDir dir;
+  const CliRun help = run(dir, {"--help"});
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("cadmedial compute INPUT -o OUTPUT"), std::string::npos) << help.out;
+  const CliRun version = run(dir, {"--version"});
+  EXPECT_EQ(version.status, 0);
+  EXPECT_EQ(version.out.rfind("cadmedial 0.1.0", 0), 0u) << version.out;
+}
+
+TEST(Cli, InfoDescribesTheSolid) {
+  TempDir dir;
+  const CliRun r = run(dir, {"info", box_brep(dir), "--samples", "600"});
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("1 solid"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("faces 6, edges 12, vertices 8, volume 1,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("box [0, 0, 0] .. [1, 1, 1]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sampling plan: spacing"), std::string::npos) << r.out;
+}
+
+// The medial axis of the unit cube lies inside the cube, and no point of it is farther than 1/2
+// from the boundary (up to the sample spacing, since radii are distances to samples).
+TEST(Cli, ComputeWritesAMeshInsideTheCubeAndValidStats) {
+  TempDir dir;
+  const std::string input = box_brep(dir), output = dir.file("cube.ply"), stats = dir.file("cube.json");
+  const CliRun r = run(dir, {"compute", input, "-o", output, "--samples", "1500", "--stats", stats, "--quiet"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");  // --quiet
+  EXPECT_NE(r.out.find("wrote " + output), std::string::npos) << r.out;
+  const MedialMesh m = read_medial_mesh(output);
+  ASSERT_GT(m.num_faces(), 0u);
+  const double slack = 0.1;  // > spacing: sqrt(6 / 1500) ~ 0.063
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    for (double c : m.vertices[v]) {
+      EXPECT_GE(c, -slack);
+      EXPECT_LE(c, 1.0 + slack);
+    }
+    EXPECT_GT(m.radius[v], 0.0);
+    EXPECT_LE(m.radius[v], 0.5 + slack);
+  }
+  const std::string json = test::read_file(stats);
+  EXPECT_EQ(json.rfind("{", 0), 0u);
+  EXPECT_NE(json.find("\"timings\""), std::string::npos);
+  std::vector<std::string> names = dir.entries();
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"box.brep", "cube.json", "cube.ply"}));
+}
+
+TEST(Cli, ProgressIsALinePerStageChangeNotAFlood) {
+  TempDir dir;
+  const CliRun r = run(dir, {"compute", box_brep(dir), "-o", dir.file("c.obj"), "--samples", "1500"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const long lines = std::count(r.err.begin(), r.err.end(), '\n');
+  EXPECT_GE(lines, 1) << r.err;
+  EXPECT_LE(lines, 100) << r.err;
+  EXPECT_EQ(r.err.rfind("[", 0), 0u) << r.err;
+}
+
+}  // namespace
+}  // namespace cadmedial

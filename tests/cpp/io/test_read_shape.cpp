@@ -1,0 +1,325 @@
+#include "core/io/read_shape.h"
+
+#include <gtest/gtest.h>
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <gp_Pln.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Writer.hxx>
+#include <STEPControl_Writer.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Shell.hxx>
+
+#include <sstream>
+
+#include "core/errors.h"
+#include "io/io_test_files.h"
+
+namespace cadmedial {
+namespace {
+
+using test::TempDir;
+
+double volume(const TopoDS_Shape& s) {
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(s, props);
+  return props.Mass();
+}
+
+TopoDS_Shape box(double x = 1, double y = 2, double z = 3) { return BRepPrimAPI_MakeBox(x, y, z).Shape(); }
+
+TopoDS_Shell box_shell() { return TopoDS::Shell(TopExp_Explorer(box(), TopAbs_SHELL).Current()); }
+
+// The faces of a box put into a new shell, all but `skip` of them (-1: all).
+TopoDS_Shell shell_of_box_faces(int skip = -1) {
+  BRep_Builder b;
+  TopoDS_Shell shell;
+  b.MakeShell(shell);
+  int i = 0;
+  for (TopExp_Explorer fx(box(), TopAbs_FACE); fx.More(); fx.Next(), ++i)
+    if (i != skip) b.Add(shell, fx.Current());
+  return shell;
+}
+
+std::string brep_file(const TempDir& dir, const TopoDS_Shape& shape, const std::string& name = "s.brep") {
+  const std::string path = dir.file(name);
+  EXPECT_TRUE(BRepTools::Write(shape, path.c_str()));
+  return path;
+}
+
+std::string step_file(const TempDir& dir, const TopoDS_Shape& shape, const std::string& name = "s.step") {
+  const std::string path = dir.file(name);
+  STEPControl_Writer writer;
+  EXPECT_EQ(writer.Transfer(shape, STEPControl_AsIs), IFSelect_RetDone);
+  EXPECT_EQ(writer.Write(path.c_str()), IFSelect_RetDone);
+  return path;
+}
+
+// The message of the InvalidInput that f throws ("" and a test failure when it throws nothing).
+template <class F>
+std::string refusal(F f) {
+  try {
+    f();
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "expected InvalidInput";
+  return "";
+}
+
+#define EXPECT_CONTAINS(text, fragment) EXPECT_NE(std::string(text).find(fragment), std::string::npos) << text
+
+TEST(ReadShapeFile, BoxBrepGivesOneSolidOfItsVolume) {
+  TempDir dir;
+  const auto solids = extract_solids(read_shape_file(brep_file(dir, box())));
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+}
+
+TEST(ReadShapeFile, BoxStepGivesOneSolidOfItsVolume) {
+  TempDir dir;
+  const auto solids = extract_solids(read_shape_file(step_file(dir, box())));
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-6);
+}
+
+TEST(ReadShapeFile, ExtensionIsCaseInsensitive) {
+  TempDir dir;
+  EXPECT_EQ(extract_solids(read_shape_file(step_file(dir, box(), "PART.STP"))).size(), 1u);
+  EXPECT_EQ(extract_solids(read_shape_file(brep_file(dir, box(), "PART.Brp"))).size(), 1u);
+}
+
+TEST(ReadShapeFile, IgesOfFacesIsSewnIntoASolid) {
+  TempDir dir;
+  const std::string path = dir.file("box.igs");
+  IGESControl_Controller::Init();
+  IGESControl_Writer writer("MM", 0);  // mode 0: faces (trimmed surfaces), no solid entity
+  ASSERT_TRUE(writer.AddShape(box(2, 2, 2)));
+  writer.ComputeModel();
+  ASSERT_TRUE(writer.Write(path.c_str()));
+  const auto solids = extract_solids(read_shape_file(path));
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 8.0, 1e-4);
+}
+
+TEST(ReadShapeFile, MissingFileIsRefused) {
+  TempDir dir;
+  EXPECT_CONTAINS(refusal([&] { read_shape_file(dir.file("nope.step")); }), "nope.step: no such file");
+}
+
+TEST(ReadShapeFile, EmptyFileIsRefused) {
+  TempDir dir;
+  test::write_file(dir.file("empty.step"), "");
+  EXPECT_CONTAINS(refusal([&] { read_shape_file(dir.file("empty.step")); }), "empty.step: the file is empty");
+}
+
+TEST(ReadShapeFile, UnknownExtensionIsRefused) {
+  TempDir dir;
+  test::write_file(dir.file("part.txt"), "hello");
+  EXPECT_CONTAINS(refusal([&] { read_shape_file(dir.file("part.txt")); }), "unknown file type '.txt'");
+}
+
+TEST(ReadShapeFile, GarbageStepIsRefused) {
+  TempDir dir;
+  test::write_file(dir.file("junk.step"), "this is not STEP\n\x01\x02 at all\n");
+  EXPECT_CONTAINS(refusal([&] { read_shape_file(dir.file("junk.step")); }), "junk.step: ");
+}
+
+TEST(ReadShapeFile, GarbageBrepIsRefused) {
+  TempDir dir;
+  test::write_file(dir.file("junk.brep"), "0 1 2 3 garbage\n");
+  EXPECT_CONTAINS(refusal([&] { read_shape_file(dir.file("junk.brep")); }), "junk.brep: not a BREP file");
+}
+
+TEST(ReadShapeFile, TruncatedStepIsRefused) {
+  TempDir dir;
+  const std::string text = test::read_file(step_file(dir, box()));
+  test::write_file(dir.file("cut.step"), text.substr(0, text.size() / 2));
+  // The parser may keep the entities before the cut, but no closed solid can come of them.
+  const std::string why = refusal([&] { extract_solids(read_shape_file(dir.file("cut.step"))); });
+  EXPECT_FALSE(why.empty());
+}
+
+TEST(ReadShapeFile, TruncatedBrepIsRefused) {
+  TempDir dir;
+  const std::string text = test::read_file(brep_file(dir, box()));
+  test::write_file(dir.file("cut.brep"), text.substr(0, text.size() / 2));
+  const std::string why = refusal([&] { extract_solids(read_shape_file(dir.file("cut.brep"))); });
+  EXPECT_FALSE(why.empty());
+}
+
+TEST(ReadBrepString, RoundTripOfABox) {
+  std::ostringstream out;
+  BRepTools::Write(box(), out);
+  const auto solids = extract_solids(read_brep_string(out.str()));
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+}
+
+TEST(ReadBrepString, GarbageAndEmptyAreRefused) {
+  EXPECT_CONTAINS(refusal([] { read_brep_string("not a shape"); }), "BREP text");
+  EXPECT_CONTAINS(refusal([] { read_brep_string(""); }), "empty");
+}
+
+TEST(ExtractSolids, CompoundOfTwoBoxesGivesTwoSolidsInOrder) {
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  b.Add(c, box(1, 1, 1));
+  b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(5, 0, 0), 2, 2, 2).Shape());
+  const auto solids = extract_solids(c);
+  ASSERT_EQ(solids.size(), 2u);
+  EXPECT_NEAR(volume(solids[0]), 1.0, 1e-9);
+  EXPECT_NEAR(volume(solids[1]), 8.0, 1e-9);
+}
+
+TEST(ExtractSolids, EmptyCompoundIsRefused) {
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  EXPECT_CONTAINS(refusal([&] { extract_solids(c); }), "holds no solid");
+}
+
+TEST(ExtractSolids, NullShapeIsRefused) {
+  EXPECT_CONTAINS(refusal([] { extract_solids(TopoDS_Shape()); }), "empty");
+}
+
+TEST(ExtractSolids, LooseEdgesAloneAreRefusedAndCounted) {
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  b.Add(c, BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0)).Edge());
+  b.Add(c, BRepBuilderAPI_MakeEdge(gp_Pnt(0, 1, 0), gp_Pnt(1, 1, 0)).Edge());
+  EXPECT_CONTAINS(refusal([&] { extract_solids(c); }), "(only 2 loose edges)");
+}
+
+TEST(ExtractSolids, LooseEdgeBesideASolidIsIgnored) {
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  b.Add(c, box());
+  b.Add(c, BRepBuilderAPI_MakeEdge(gp_Pnt(9, 0, 0), gp_Pnt(10, 0, 0)).Edge());
+  EXPECT_EQ(extract_solids(c).size(), 1u);
+}
+
+TEST(ExtractSolids, OpenShellIsRefusedNamingAnEdgeWithOneFace) {
+  const std::string why = refusal([] { extract_solids(shell_of_box_faces(/*skip=*/0)); });
+  EXPECT_CONTAINS(why, "shell 1");
+  EXPECT_CONTAINS(why, "is bounded by 1 face (the shell is open)");
+}
+
+TEST(ExtractSolids, OpenShellInAFileIsRefused) {
+  TempDir dir;
+  const std::string why =
+      refusal([&] { extract_solids(read_shape_file(brep_file(dir, shell_of_box_faces(2), "open.brep"))); });
+  EXPECT_CONTAINS(why, "is bounded by 1 face (the shell is open)");
+}
+
+TEST(ExtractSolids, ClosedShellBecomesASolidWithPositiveVolume) {
+  const auto solids = extract_solids(shell_of_box_faces());
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+}
+
+TEST(ExtractSolids, ReversedShellBecomesASolidWithPositiveVolume) {
+  const auto solids = extract_solids(box_shell().Reversed());
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+}
+
+TEST(ExtractSolids, InsideOutSolidIsReversed) {
+  const auto solids = extract_solids(box().Reversed());
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+}
+
+TEST(ExtractSolids, SeamsAndPolesAreNotOpenEdges) {
+  // A sphere has a seam (one face on both sides) and two degenerate edges at its poles; a cylinder
+  // has a seam. Neither is open.
+  EXPECT_EQ(extract_solids(BRepPrimAPI_MakeSphere(2.0).Shape()).size(), 1u);
+  EXPECT_EQ(extract_solids(BRepPrimAPI_MakeCylinder(1.0, 3.0).Shape()).size(), 1u);
+  const TopoDS_Shape sphere_shell = TopExp_Explorer(BRepPrimAPI_MakeSphere(2.0).Shape(), TopAbs_SHELL).Current();
+  const auto solids = extract_solids(sphere_shell);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 4.0 / 3.0 * M_PI * 8.0, 1e-6);
+}
+
+TEST(ExtractSolids, NonManifoldEdgeIsRefused) {
+  // A fin: a square face hung on one edge of a closed box shell, so that edge has three faces.
+  TopoDS_Shell shell = shell_of_box_faces();
+  const TopoDS_Edge edge = TopoDS::Edge(TopExp_Explorer(shell, TopAbs_EDGE).Current());
+  TopoDS_Vertex v1, v2;
+  TopExp::Vertices(edge, v1, v2);
+  const gp_Pnt p1 = BRep_Tool::Pnt(v1), p2 = BRep_Tool::Pnt(v2);
+  // Away from the box: along the sum of the box's outward directions at the edge is enough.
+  gp_Vec out(gp_Pnt(0.5, 1.0, 1.5), p1.Translated(0.5 * gp_Vec(p1, p2)));
+  out.Normalize();
+  const gp_Pnt p3 = p2.Translated(out), p4 = p1.Translated(out);
+  const TopoDS_Vertex v3 = BRepBuilderAPI_MakeVertex(p3), v4 = BRepBuilderAPI_MakeVertex(p4);
+  BRepBuilderAPI_MakeWire wire(edge, BRepBuilderAPI_MakeEdge(v2, v3).Edge(), BRepBuilderAPI_MakeEdge(v3, v4).Edge(),
+                               BRepBuilderAPI_MakeEdge(v4, v1).Edge());
+  ASSERT_TRUE(wire.IsDone());
+  BRepBuilderAPI_MakeFace fin(wire.Wire(), true);
+  ASSERT_TRUE(fin.IsDone());
+  BRep_Builder b;
+  shell.Free(true);
+  b.Add(shell, fin.Face());
+  const std::string why = refusal([&] { extract_solids(shell); });
+  EXPECT_CONTAINS(why, "is bounded by 3 faces (non-manifold)");
+}
+
+TEST(ExtractSolids, LooseFacesOfABoxAreSewnIntoASolid) {
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  for (TopExp_Explorer fx(box(), TopAbs_FACE); fx.More(); fx.Next()) b.Add(c, fx.Current());
+  const auto solids = extract_solids(c);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+}
+
+TEST(ExtractSolids, LooseFacesThatDoNotCloseAreRefused) {
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  int i = 0;
+  for (TopExp_Explorer fx(box(), TopAbs_FACE); fx.More(); fx.Next(), ++i)
+    if (i != 3) b.Add(c, fx.Current());
+  EXPECT_CONTAINS(refusal([&] { extract_solids(c); }), "do not sew into closed shells");
+}
+
+TEST(ExtractSolids, LooseFaceBesideASolidIsRefused) {
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  b.Add(c, box());
+  b.Add(c, BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 10), gp_Dir(0, 0, 1)), 0, 1, 0, 1).Face());
+  EXPECT_CONTAINS(refusal([&] { extract_solids(c); }), "1 loose face");
+}
+
+TEST(ExtractSolids, BRepCheckFailureNamesTheSubShape) {
+  // Moving a vertex of a box far from its edges' ends, with a tiny tolerance, breaks the B-rep.
+  const TopoDS_Shape shape = BRepPrimAPI_MakeBox(1, 1, 1).Shape();
+  const TopoDS_Vertex v = TopoDS::Vertex(TopExp_Explorer(shape, TopAbs_VERTEX).Current());
+  BRep_Builder().UpdateVertex(v, BRep_Tool::Pnt(v).Translated(gp_Vec(0.3, 0.2, 0.1)), 1e-7);
+  const std::string why = refusal([&] { extract_solids(shape); });
+  EXPECT_CONTAINS(why, "solid 1: ");
+  EXPECT_CONTAINS(why, "is invalid (BRepCheck_");
+}
+
+}  // namespace
+}  // namespace cadmedial
