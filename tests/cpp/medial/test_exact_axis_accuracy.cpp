@@ -39,7 +39,7 @@ TEST_P(ExactMedialAxis, EveryVertexIsNearTheExactAxis) {
 TEST_P(ExactMedialAxis, TheExactAxisIsCoveredByTheOutput) {
   const MedialMesh* m = mesh();
   if (!m) return;
-  const MeshDistance surface(*m);
+  const MeshDistance surface(*m, c().bbox_diagonal);
   const std::vector<Vec3> points = c().axis_sample(2000, 17);
   std::vector<double> d;
   for (const auto& p : points) d.push_back(surface.distance(p));
@@ -52,7 +52,7 @@ TEST_P(ExactMedialAxis, EveryConvexEdgeIsReached) {
   if (c().convex_edge_points.empty()) GTEST_SKIP() << c().name << " has no convex edge";
   const MedialMesh* m = mesh();
   if (!m) return;
-  const MeshDistance surface(*m);
+  const MeshDistance surface(*m, c().bbox_diagonal);
   std::vector<double> d;
   for (const auto& p : c().convex_edge_points) d.push_back(surface.distance(p));
   const Summary s = summarize(d, c().convex_edge_points, c().spacing);
@@ -64,7 +64,7 @@ TEST_P(ExactMedialAxis, EveryNonconcaveCornerIsReached) {
   if (c().corners.empty()) GTEST_SKIP() << c().name << " has no corner";
   const MedialMesh* m = mesh();
   if (!m) return;
-  const MeshDistance surface(*m);
+  const MeshDistance surface(*m, c().bbox_diagonal);
   std::vector<double> d;
   for (const auto& p : c().corners) d.push_back(surface.distance(p));
   const Summary s = summarize(d, c().corners, c().spacing);
@@ -106,7 +106,7 @@ TEST_P(ExactMedialAxis, EveryRadiusIsTheDistanceToTheBoundary) {
 TEST_P(ExactMedialAxis, TheOutputIsOnePiece) {
   const MedialMesh* m = mesh();
   if (!m) return;
-  EXPECT_EQ(connected_pieces(*m), 1) << c().name;
+  EXPECT_EQ(connected_pieces(*m, c().bbox_diagonal), 1) << c().name;
 }
 
 TEST_P(ExactMedialAxis, EveryFaceBelongsToSolidZero) {
@@ -121,7 +121,7 @@ TEST_P(ExactMedialAxis, TheEulerCharacteristicIsTheSolids) {
   const MedialMesh* m = mesh();
   if (!m) return;
   int degenerate = 0;
-  const long chi = euler_characteristic(*m, -1, &degenerate);
+  const long chi = euler_characteristic(*m, c().bbox_diagonal, -1, &degenerate);
   EXPECT_EQ(chi, c().euler) << c().name << ": V - E + F of the output (" << degenerate
                             << " degenerate polygons after welding)";
 }

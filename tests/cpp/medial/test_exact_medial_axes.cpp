@@ -148,29 +148,29 @@ TEST(MeshMeasures, EulerCharacteristicOfKnownComplexes) {
   // A closed tetrahedron surface: 4 - 6 + 4 = 2.
   const MedialMesh tet = mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
                                  {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}});
-  EXPECT_EQ(euler_characteristic(tet), 2);
+  EXPECT_EQ(euler_characteristic(tet, 1.0), 2);
   // A square annulus of 4 quads: 8 - 12 + 4 = 0, one piece.
   const MedialMesh ring = mesh_of({{0, 0, 0}, {3, 0, 0}, {3, 3, 0}, {0, 3, 0},
                                    {1, 1, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}},
                                   {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
-  EXPECT_EQ(euler_characteristic(ring), 0);
-  EXPECT_EQ(connected_pieces(ring), 1);
+  EXPECT_EQ(euler_characteristic(ring, 3.0), 0);
+  EXPECT_EQ(connected_pieces(ring, 3.0), 1);
 }
 
 TEST(MeshMeasures, CoincidentVerticesAreWelded) {
   // Two triangles that share an edge only through duplicated vertices: one piece, chi = 1.
   const MedialMesh m = mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}},
                                {{0, 1, 2}, {3, 5, 4}});
-  EXPECT_EQ(connected_pieces(m), 1);
-  EXPECT_EQ(euler_characteristic(m), 1);
+  EXPECT_EQ(connected_pieces(m, 1.5), 1);
+  EXPECT_EQ(euler_characteristic(m, 1.5), 1);
   const MedialMesh apart = mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}},
                                    {{0, 1, 2}, {3, 4, 5}});
-  EXPECT_EQ(connected_pieces(apart), 2);
+  EXPECT_EQ(connected_pieces(apart, 6.0), 2);
 }
 
 TEST(MeshMeasures, DistanceToTriangles) {
   const MedialMesh m = mesh_of({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}}, {{0, 1, 2, 3}});
-  const MeshDistance dist(m);
+  const MeshDistance dist(m, 3.0);
   EXPECT_NEAR(dist.distance({1, 1, 0.5}), 0.5, 1e-12);
   EXPECT_NEAR(dist.distance({3, 1, 0}), 1.0, 1e-12);
   EXPECT_EQ(dist.num_triangles(), 2u);

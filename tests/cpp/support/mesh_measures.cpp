@@ -47,9 +47,8 @@ struct MeshDistance::Impl {
   Tree tree;
 };
 
-MeshDistance::MeshDistance(const MedialMesh& mesh, int solid) : impl_(std::make_unique<Impl>()) {
-  const double diag = mesh_bbox_diagonal(mesh);
-  const double min_area2 = std::pow(1e-12 * diag * diag, 2);  // squared area threshold
+MeshDistance::MeshDistance(const MedialMesh& mesh, double scale, int solid) : impl_(std::make_unique<Impl>()) {
+  const double min_area2 = std::pow(1e-12 * scale * scale, 2);  // squared area threshold
   auto point = [&](int v) {
     const auto& p = mesh.vertices[v];
     return K::Point_3(p[0], p[1], p[2]);
@@ -83,10 +82,10 @@ double mesh_bbox_diagonal(const MedialMesh& mesh) {
   return norm(hi - lo);
 }
 
-std::vector<int> weld_vertices(const MedialMesh& mesh) {
+std::vector<int> weld_vertices(const MedialMesh& mesh, double scale) {
   const std::size_t n = mesh.vertices.size();
   UnionFind uf(n);
-  const double eps = 1e-12 * mesh_bbox_diagonal(mesh);
+  const double eps = 1e-12 * scale;
   if (eps > 0) {
     // Hash grid of cell eps: coincident vertices are in the same or a neighbouring cell.
     struct Hash {
@@ -121,8 +120,8 @@ std::vector<int> weld_vertices(const MedialMesh& mesh) {
   return rep;
 }
 
-int connected_pieces(const MedialMesh& mesh, int solid, std::vector<int>* face_piece) {
-  const std::vector<int> rep = weld_vertices(mesh);
+int connected_pieces(const MedialMesh& mesh, double scale, int solid, std::vector<int>* face_piece) {
+  const std::vector<int> rep = weld_vertices(mesh, scale);
   UnionFind uf(mesh.vertices.size());
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     if (!in_solid(mesh, f, solid)) continue;
@@ -141,8 +140,8 @@ int connected_pieces(const MedialMesh& mesh, int solid, std::vector<int>* face_p
   return static_cast<int>(piece_of_root.size());
 }
 
-long euler_characteristic(const MedialMesh& mesh, int solid, int* degenerate) {
-  const std::vector<int> rep = weld_vertices(mesh);
+long euler_characteristic(const MedialMesh& mesh, double scale, int solid, int* degenerate) {
+  const std::vector<int> rep = weld_vertices(mesh, scale);
   std::set<int> vertices;
   std::set<std::pair<int, int>> edges;
   std::set<std::vector<int>> faces;

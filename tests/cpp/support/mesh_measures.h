@@ -15,8 +15,9 @@ namespace cadmedial::test {
 /// vertices and edges in other polygons, or is not a surface.
 class MeshDistance {
  public:
-  /// Faces of solid `solid` only, or all faces when solid < 0.
-  explicit MeshDistance(const MedialMesh& mesh, int solid = -1);
+  /// Faces of solid `solid` only, or all faces when solid < 0. `scale` is the size of the solid
+  /// (bounding-box diagonal): triangles of area below (1e-12 scale)^2 are left out.
+  MeshDistance(const MedialMesh& mesh, double scale, int solid = -1);
   ~MeshDistance();
   MeshDistance(const MeshDistance&) = delete;
   MeshDistance& operator=(const MeshDistance&) = delete;
@@ -30,23 +31,24 @@ class MeshDistance {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Vertex representatives after welding: vertices closer than 1e-12 * (bounding-box diagonal of the
-/// mesh) are one vertex (an engine may emit the same Voronoi vertex once per facet, and exact
-/// duplicates must not split a piece or inflate V). Returns #V: the index of each vertex's
-/// representative (the smallest index in its cluster).
-std::vector<int> weld_vertices(const MedialMesh& mesh);
+/// Vertex representatives after welding: vertices closer than 1e-12 * scale are one vertex (an
+/// engine may emit the same Voronoi vertex once per facet, and exact duplicates must not split a
+/// piece or inflate V). `scale` is the size of the solid (its bounding-box diagonal), not of the
+/// mesh: one stray vertex far away must not make the weld radius coarse. Returns #V: the index of
+/// each vertex's representative (the smallest index in its cluster).
+std::vector<int> weld_vertices(const MedialMesh& mesh, double scale);
 
-/// Connected pieces of the faces of solid `solid` (all when < 0): faces are connected when they
+/// Connected pieces (welded with weld_vertices(mesh, scale)) of the faces of solid `solid` (all when < 0): faces are connected when they
 /// share a (welded) vertex. Returns the number of pieces and, in face_piece (#F, -1 for faces of
 /// other solids), each face's piece.
-int connected_pieces(const MedialMesh& mesh, int solid = -1, std::vector<int>* face_piece = nullptr);
+int connected_pieces(const MedialMesh& mesh, double scale, int solid = -1, std::vector<int>* face_piece = nullptr);
 
 /// Euler characteristic V - E + F of the polygon complex of solid `solid` (all when < 0), after
 /// welding: V counts welded vertices used by faces, E unique undirected edges of the polygons,
-/// F distinct polygons (same vertex set = same polygon). A polygon whose welded boundary has fewer
+/// F distinct polygons  (same vertex set = same polygon). A polygon whose welded boundary has fewer
 /// than 3 distinct vertices contributes its edge but no face. *degenerate, when given, receives the
 /// number of such polygons (the figure is only meaningful if that is 0 or they are harmless).
-long euler_characteristic(const MedialMesh& mesh, int solid = -1, int* degenerate = nullptr);
+long euler_characteristic(const MedialMesh& mesh, double scale, int solid = -1, int* degenerate = nullptr);
 
 /// Bounding-box diagonal of the mesh's vertices.
 double mesh_bbox_diagonal(const MedialMesh& mesh);

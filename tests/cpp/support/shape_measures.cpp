@@ -20,15 +20,22 @@ namespace cadmedial::test {
 
 struct SolidClassifier::Impl {
   BRepClass3d_SolidClassifier classifier;
+  Bnd_Box box;
 };
 
 SolidClassifier::SolidClassifier(const TopoDS_Shape& solid) : impl_(std::make_unique<Impl>()) {
   impl_->classifier.Load(solid);
+  BRepBndLib::AddOptimal(solid, impl_->box, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
 }
 
 SolidClassifier::~SolidClassifier() = default;
 
 bool SolidClassifier::inside_or_on(const Vec3& p, double tol) const {
+  // The classifier answers IN for some points 1e15 away (rounding in its ray casting): a point
+  // outside the bounding box enlarged by tol is outside, whatever it says.
+  Bnd_Box grown = impl_->box;
+  grown.Enlarge(tol);
+  if (grown.IsOut(gp_Pnt(p[0], p[1], p[2]))) return false;
   impl_->classifier.Perform(gp_Pnt(p[0], p[1], p[2]), tol);
   const TopAbs_State state = impl_->classifier.State();
   return state == TopAbs_IN || state == TopAbs_ON;
