@@ -1,0 +1,61 @@
+// Measures on OpenCASCADE solids: inside test, distance to the boundary, points on features.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <TopoDS_Shape.hxx>
+
+#include "core/features/classify_features.h"
+#include "support/vec3.h"
+
+namespace cadmedial::test {
+
+/// Inside test by BRepClass3d_SolidClassifier, loaded once for many points.
+class SolidClassifier {
+ public:
+  explicit SolidClassifier(const TopoDS_Shape& solid);
+  ~SolidClassifier();
+  /// True when p is IN the solid or ON its boundary within tolerance tol.
+  bool inside_or_on(const Vec3& p, double tol) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Distance from a point to the boundary of a shape (its faces, as a compound: a solid would
+/// count interior points at distance 0), by BRepExtrema_DistShapeShape. About a millisecond per
+/// point on a part with dozens of faces: callers sample.
+class BoundaryDistance {
+ public:
+  explicit BoundaryDistance(const TopoDS_Shape& shape);
+  ~BoundaryDistance();
+  double distance(const Vec3& p) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Diagonal of the shape's bounding box (BRepBndLib, without the tolerance enlargement).
+double shape_bbox_diagonal(const TopoDS_Shape& shape);
+
+/// Points along every edge classified Convex, at most `step` apart along the curve (ends included).
+std::vector<Vec3> convex_edge_points(const Features& features, double step);
+
+/// The positions of the vertices flagged nonconcave_corner.
+std::vector<Vec3> nonconcave_corner_points(const Features& features);
+
+}  // namespace cadmedial::test
+
+namespace cadmedial::test {
+
+/// Euler characteristic of the solid (as a 3-manifold with boundary), from its B-rep alone:
+/// chi(solid) = chi(boundary) / 2, and chi(boundary) = V - E + sum over faces of (2 - #wires)
+/// (a face with k wires is a disc with k - 1 holes; a seam edge is an ordinary edge of the cell
+/// decomposition; degenerate edges, e.g. a sphere's poles, collapse to their vertex and are not
+/// counted). Box 1, ball 1, solid torus 0, a block with g through-holes 1 - g.
+long solid_euler_characteristic(const TopoDS_Shape& solid);
+
+}  // namespace cadmedial::test
