@@ -6,6 +6,7 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -35,6 +36,7 @@ struct MedialComplex {
   std::vector<int> nodes;
   std::vector<FaceKind> kind;
   std::vector<int> points;       ///< cells where a selected facet collapsed to a single point
+  std::vector<std::array<int, 2>> dual;  ///< per face: the Delaunay edge pq of a Voronoi facet, else -1
 
   int cell_id(const Cell& c) {
     if (c->info().id < 0) {
@@ -48,7 +50,8 @@ struct MedialComplex {
     return c->info().id;
   }
   static int sample_node(int s) { return -(s + 1); }
-  void add(const std::vector<int>& face_nodes, FaceKind k) {
+  void add(const std::vector<int>& face_nodes, FaceKind k, std::array<int, 2> pq = {-1, -1}) {
+    dual.push_back(pq);
     nodes.insert(nodes.end(), face_nodes.begin(), face_nodes.end());
     start.push_back(static_cast<int>(nodes.size()));
     kind.push_back(k);

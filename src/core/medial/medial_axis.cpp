@@ -105,7 +105,7 @@ void select_facets(const Delaunay& dt, const Selection& sel, MedialComplex& mc, 
       }
       face.push_back(mc.cell_id(cc));
     } while (++cc != done);
-    if (bounded && face.size() >= 3) mc.add(face, FaceKind::Voronoi);
+    if (bounded && face.size() >= 3) mc.add(face, FaceKind::Voronoi, {p, q});
   }
 }
 
@@ -274,6 +274,7 @@ void merge_coincident_cells(MedialComplex& mc, double eps) {
   // Rewrite faces: drop repeated corners, then faces left with fewer than three, then duplicates.
   std::vector<int> start{0}, nodes;
   std::vector<FaceKind> kind;
+  std::vector<std::array<int, 2>> dual;
   std::set<std::vector<int>> seen;
   std::vector<int> face, key_nodes;
   for (size_t f = 0; f < mc.size(); ++f) {
@@ -292,7 +293,9 @@ void merge_coincident_cells(MedialComplex& mc, double eps) {
     nodes.insert(nodes.end(), face.begin(), face.end());
     start.push_back(static_cast<int>(nodes.size()));
     kind.push_back(mc.kind[f]);
+    dual.push_back(mc.dual[f]);
   }
+  mc.dual = std::move(dual);
   mc.start = std::move(start);
   mc.nodes = std::move(nodes);
   mc.kind = std::move(kind);

@@ -442,20 +442,18 @@ class Sampler {
     FaceDomain& dom = out_.faces[fi];
     double u0, u1, v0, v1;
     BRepTools::UVBounds(face, u0, u1, v0, v1);
-    const double tol = 1e-7 * std::max({u1 - u0, v1 - v0, 1e-12});
+    const double tol = 1e-6 * std::max({u1 - u0, v1 - v0, 1e-12});
+    // Chains of adjacent edges meet at a corner: one local point per (sample, uv). A sample has
+    // several only on seams and degenerate edges, where its uv differ by much more than tol.
+    std::unordered_map<int, std::vector<int>> copies;
     auto local = [&](int sample, double u, double v) {
-      // Chains of adjacent edges meet at a corner: one local point per (sample, uv).
-      for (size_t k = dom.sample.size(); k-- > 0;) {
-        if (dom.sample[k] == sample && std::abs(dom.uv[k][0] - u) < tol && std::abs(dom.uv[k][1] - v) < tol)
-          return static_cast<int>(k);
-        if (dom.sample.size() - k > 64) break;
-      }
-      for (size_t k = 0; k < std::min<size_t>(dom.sample.size(), 64); ++k)
-        if (dom.sample[k] == sample && std::abs(dom.uv[k][0] - u) < tol && std::abs(dom.uv[k][1] - v) < tol)
-          return static_cast<int>(k);
+      auto& list = copies[sample];
+      for (int k : list)
+        if (std::abs(dom.uv[k][0] - u) < tol && std::abs(dom.uv[k][1] - v) < tol) return k;
       dom.sample.push_back(sample);
       dom.uv.push_back({u, v});
-      return static_cast<int>(dom.sample.size() - 1);
+      list.push_back(static_cast<int>(dom.sample.size() - 1));
+      return list.back();
     };
     for (TopExp_Explorer ex(fwd, TopAbs_EDGE); ex.More(); ex.Next()) {
       const TopoDS_Edge& edge = TopoDS::Edge(ex.Current());
