@@ -16,12 +16,13 @@ namespace {
 class ExactMedialAxis : public ::testing::TestWithParam<int> {
  protected:
   const ExactCase& c() const { return exact_cases()[GetParam()]; }
-  // The engine's output for this solid; fails the test (returns nullptr) when it is empty.
+  // The engine's output for this solid; fails the test (returns nullptr) when it is empty. A
+  // sphere's axis is its centre: vertices without faces are an answer, not an empty output.
   const MedialMesh* mesh() {
     const ComputeResult& result = medial_axis_of(c().name, c().make_shape, c().spacing);
-    EXPECT_GT(result.mesh.num_faces(), 0u) << c().name << ": empty output";
+    EXPECT_GT(result.mesh.num_vertices(), 0u) << c().name << ": empty output";
     EXPECT_EQ(result.mesh.radius.size(), result.mesh.vertices.size());
-    return result.mesh.num_faces() > 0 ? &result.mesh : nullptr;
+    return result.mesh.num_vertices() > 0 ? &result.mesh : nullptr;
   }
 };
 

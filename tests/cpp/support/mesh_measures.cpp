@@ -40,11 +40,24 @@ bool in_solid(const MedialMesh& mesh, std::size_t f, int solid) {
   return solid < 0 || (f < mesh.solid.size() && mesh.solid[f] == solid);
 }
 
+// Vertices no face uses: a medial axis that is a point (a sphere's centre) is one such vertex.
+// They carry no solid index, so they count only when all solids are asked for.
+std::vector<int> isolated_vertices(const MedialMesh& mesh, int solid) {
+  if (solid >= 0) return {};
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (int v : mesh.face_vertices) used[v] = 1;
+  std::vector<int> out;
+  for (std::size_t v = 0; v < used.size(); ++v)
+    if (!used[v]) out.push_back(static_cast<int>(v));
+  return out;
+}
+
 }  // namespace
 
 struct MeshDistance::Impl {
   std::vector<Triangle> triangles;
   Tree tree;
+  std::vector<Vec3> points;  // isolated vertices
 };
 
 MeshDistance::MeshDistance(const MedialMesh& mesh, double scale, int solid) : impl_(std::make_unique<Impl>()) {
@@ -61,6 +74,7 @@ MeshDistance::MeshDistance(const MedialMesh& mesh, double scale, int solid) : im
       if (CGAL::to_double(t.squared_area()) > min_area2) impl_->triangles.push_back(t);
     }
   }
+  for (int v : isolated_vertices(mesh, solid)) impl_->points.push_back(mesh.vertices[v]);
   impl_->tree.insert(impl_->triangles.cbegin(), impl_->triangles.cend());
   if (!impl_->triangles.empty()) impl_->tree.accelerate_distance_queries();
 }
@@ -68,8 +82,10 @@ MeshDistance::MeshDistance(const MedialMesh& mesh, double scale, int solid) : im
 MeshDistance::~MeshDistance() = default;
 
 double MeshDistance::distance(const Vec3& p) const {
-  if (impl_->triangles.empty()) return std::numeric_limits<double>::infinity();
-  return std::sqrt(CGAL::to_double(impl_->tree.squared_distance(K::Point_3(p[0], p[1], p[2]))));
+  double best = std::numeric_limits<double>::infinity();
+  for (const Vec3& q : impl_->points) best = std::min(best, norm(p - q));
+  if (impl_->triangles.empty()) return best;
+  return std::min(best, std::sqrt(CGAL::to_double(impl_->tree.squared_distance(K::Point_3(p[0], p[1], p[2])))));
 }
 
 std::size_t MeshDistance::num_triangles() const { return impl_->triangles.size(); }
@@ -137,7 +153,10 @@ int connected_pieces(const MedialMesh& mesh, double scale, int solid, std::vecto
     pieces[f] = it->second;
   }
   if (face_piece) *face_piece = pieces;
-  return static_cast<int>(piece_of_root.size());
+  std::set<int> lone;
+  for (int v : isolated_vertices(mesh, solid))
+    if (!piece_of_root.count(uf.find(rep[v]))) lone.insert(uf.find(rep[v]));
+  return static_cast<int>(piece_of_root.size() + lone.size());
 }
 
 long euler_characteristic(const MedialMesh& mesh, double scale, int solid, int* degenerate) {
@@ -169,6 +188,7 @@ long euler_characteristic(const MedialMesh& mesh, double scale, int solid, int* 
     if (std::adjacent_find(key.begin(), key.end()) != key.end()) ++bad;  // pinched polygon
     faces.insert(key);
   }
+  for (int v : isolated_vertices(mesh, solid)) vertices.insert(rep[v]);
   if (degenerate) *degenerate = bad;
   return static_cast<long>(vertices.size()) - static_cast<long>(edges.size()) + static_cast<long>(faces.size());
 }
