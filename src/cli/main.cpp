@@ -22,8 +22,11 @@
 
 namespace {
 
-// Keep in step with project(... VERSION) in the top-level CMakeLists.txt.
-constexpr const char* kVersion = "0.1.0";
+// From project(... VERSION) in the top-level CMakeLists.txt.
+#ifndef CADMEDIAL_VERSION
+#define CADMEDIAL_VERSION "unknown"
+#endif
+constexpr const char* kVersion = CADMEDIAL_VERSION;
 
 int fail(int status, std::string message) {
   // One line, whatever the message holds (OpenCASCADE messages may carry newlines).

@@ -60,5 +60,7 @@ def assert_same_mesh(a, b):
     assert (a.num_vertices, a.num_faces) == (b.num_vertices, b.num_faces)
     rows_a, faces_a = canonical(a)
     rows_b, faces_b = canonical(b)
-    np.testing.assert_allclose(rows_a, rows_b, rtol=0, atol=1e-9)
+    # Sources differ in their last digits (BREP text vs file vs shape); circumcentres of nearly
+    # cospherical samples amplify that to ~1e-8 on a part 30 units long.
+    np.testing.assert_allclose(rows_a, rows_b, rtol=0, atol=1e-7)
     assert faces_a == faces_b

@@ -19,7 +19,13 @@ struct CellData {
 };
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;  // sample index
+// Sample index; -1 until set.
+struct SampleId {
+  int id = -1;
+  operator int() const { return id; }
+  SampleId& operator=(int i) { id = i; return *this; }
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_3<SampleId, K>;
 using Cb = CGAL::Triangulation_cell_base_with_info_3<CellData, K, CGAL::Delaunay_triangulation_cell_base_3<K>>;
 using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
 using Delaunay = CGAL::Delaunay_triangulation_3<K, Tds>;

@@ -10,6 +10,10 @@
 #include "../errors.h"
 #include "delaunay_3.h"
 
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+
 namespace cadmedial {
 
 using namespace internal;
@@ -221,7 +225,8 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
       in += v > 0;
       out += v < 0;
     }
-    if (in >= 1 && out == 0)
+    // Inside needs two agreeing votes: a wrong "inside" leaves a vertex out in the open.
+    if (in >= 2 && out == 0)
       label[id] = 1;
     else if (out >= 1 && in == 0)
       label[id] = 0;
@@ -270,6 +275,15 @@ void merge_coincident_cells(MedialComplex& mc, double eps) {
       rep[id] = found;
     else
       grid[key(gx, gy, gz)].push_back(static_cast<int>(id));
+  }
+  // The merged vertex takes the smallest of its members' positions: CGAL visits edges in an order
+  // that depends on memory addresses, so "the first member" would differ from run to run.
+  for (size_t id = 0; id < n; ++id) {
+    const int r = rep[id];
+    if (r != static_cast<int>(id) && mc.centers[id] < mc.centers[r]) {
+      mc.centers[r] = mc.centers[id];
+      mc.radii[r] = mc.radii[id];
+    }
   }
   // Rewrite faces: drop repeated corners, then faces left with fewer than three, then duplicates.
   std::vector<int> start{0}, nodes;
@@ -378,16 +392,28 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   MedialAxisStats st;
   auto t0 = Clock::now();
   Delaunay dt;
-  {
-    std::vector<std::pair<K::Point_3, int>> pts;
-    pts.reserve(samples.size());
-    for (size_t i = 0; i < samples.size(); ++i)
-      pts.push_back({K::Point_3(samples.points[i][0], samples.points[i][1], samples.points[i][2]), static_cast<int>(i)});
-    dt.insert(pts.begin(), pts.end());
-  }
-  // Samples that coincide with another keep no vertex of their own.
   std::vector<Vertex> handle(samples.size());
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) handle[v->info()] = v;
+  {
+    // Hilbert order without CGAL's default random shuffle, whose state persists between calls:
+    // the same input gives the same triangulation, and so the same mesh, in every call.
+    std::vector<K::Point_3> pts;
+    pts.reserve(samples.size());
+    for (const Point3& p : samples.points) pts.emplace_back(p[0], p[1], p[2]);
+    std::vector<std::size_t> order(pts.size());
+    std::iota(order.begin(), order.end(), 0);
+    using Traits = CGAL::Spatial_sort_traits_adapter_3<K, CGAL::Pointer_property_map<K::Point_3>::type>;
+    CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(pts)));
+    Vertex hint;
+    for (std::size_t i : order) {
+      const Vertex v = dt.insert(pts[i], hint == Vertex() ? Cell() : hint->cell());
+      // A sample that coincides with another keeps no vertex of its own.
+      if (v->info() < 0 || v->info() == static_cast<int>(i)) {
+        v->info() = static_cast<int>(i);
+        handle[i] = v;
+      }
+      hint = v;
+    }
+  }
   st.timings.push_back({"delaunay", seconds_since(t0)});
   report(progress, "selection", 0.0);
 

@@ -110,12 +110,46 @@ void check_params(const ComputeParams& params) {
   if (!std::isfinite(rho) || rho <= 0) throw InvalidInput("rho must be a positive finite number, got " + std::to_string(rho));
 }
 
+namespace {
+
+// With a target count, the plan's estimate ignores the extra samples that curved faces take:
+// sample, and rescale the spacing by the square root of the miss until within 15 % (3 passes).
+std::vector<Samples> sample_solids(const std::vector<TopoDS_Solid>& solids, const std::vector<Features>& features,
+                                   const SamplingParams& params, double& spacing, const Progress& progress) {
+  std::vector<Samples> samples;
+  const int passes = params.spacing > 0 ? 1 : 3;
+  const double target = params.target_samples > 0 ? static_cast<double>(params.target_samples)
+                                                   : static_cast<double>(SamplingParams::default_target_samples);
+  for (int pass = 0; pass < passes; ++pass) {
+    samples.clear();
+    double total = 0;
+    for (size_t i = 0; i < solids.size(); ++i) {
+      samples.push_back(sample_solid(solids[i], features[i], spacing, progress));
+      total += static_cast<double>(samples.back().size());
+    }
+    const double miss = total / target;
+    if (passes == 1 || std::abs(miss - 1.0) < 0.15 || pass + 1 == passes) break;
+    spacing *= std::sqrt(miss);
+  }
+  return samples;
+}
+
+}  // namespace
+
 SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& params) {
   ComputeParams p;
   p.sampling = params;
   check_params(p);
   try {
-    return plan(measure(extract_solids(shape)), params);
+    // The preview must match the compute: sample as compute_medial_axis does and count.
+    const std::vector<TopoDS_Solid> solids = extract_solids(shape);
+    SamplingPlan sp = plan(measure(solids), params);
+    std::vector<Features> features;
+    for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
+    std::size_t count = 0;
+    for (const Samples& s : sample_solids(solids, features, params, sp.spacing, {})) count += s.size();
+    sp.estimated_samples = count;
+    return sp;
   } catch (const Standard_Failure& err) {
     throw GeometryError(std::string("cannot measure the shape: ") + err.GetMessageString());
   }
@@ -132,9 +166,21 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
     const std::vector<TopoDS_Solid> solids = extract_solids(shape);
     const Measure m = measure(solids);
     const SamplingPlan sp = plan(m, params.sampling);
-    stats.spacing = sp.spacing;
     add_timing(stats.timings, "setup", seconds_since(t0));
     const int n = static_cast<int>(solids.size());
+
+    t0 = Clock::now();
+    report(progress, "features", 0.0);
+    std::vector<Features> features;
+    for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
+    add_timing(stats.timings, "features", seconds_since(t0));
+
+    t0 = Clock::now();
+    double spacing = sp.spacing;
+    const std::vector<Samples> samples = sample_solids(solids, features, params.sampling, spacing, progress);
+    stats.spacing = spacing;
+    add_timing(stats.timings, "sampling", seconds_since(t0));
+
     for (int i = 0; i < n; ++i) {
       const TopoDS_Solid& solid = solids[i];
       // Stage fractions are per solid; spread them over the solids.
@@ -143,27 +189,17 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       })
                                     : Progress();
       SolidStats ss;
-      t0 = Clock::now();
-      report(sub, "features", 0.0);
-      const Features features = classify_features(solid);
-      for (size_t e = 0; e < features.edge_kind.size(); ++e) {
-        const EdgeKind k = features.edge_kind[e];
+      for (EdgeKind k : features[i].edge_kind) {
         ss.convex_edges += k == EdgeKind::Convex || k == EdgeKind::Mixed;
         ss.concave_edges += k == EdgeKind::Concave;
         ss.smooth_edges += k == EdgeKind::Smooth;
       }
-      for (bool c : features.nonconcave_corner) ss.nonconcave_corners += c;
-      add_timing(stats.timings, "features", seconds_since(t0));
-
-      t0 = Clock::now();
-      report(sub, "sampling", 0.0);
-      const Samples samples = sample_solid(solid, features, sp.spacing, sub);
-      ss.samples = samples.size();
-      add_timing(stats.timings, "sampling", seconds_since(t0));
+      for (bool c : features[i].nonconcave_corner) ss.nonconcave_corners += c;
+      ss.samples = samples[i].size();
 
       t0 = Clock::now();
       report(sub, "reconstruction", 0.0);
-      const Umbrellas umbrellas = reconstruct_faces(samples, sub);
+      const Umbrellas umbrellas = reconstruct_faces(samples[i], sub);
       add_timing(stats.timings, "reconstruction", seconds_since(t0));
 
       // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt.
@@ -179,7 +215,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         return out;
       };
       MedialAxisStats ms;
-      const MedialMesh mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, sub);
+      const MedialMesh mesh = medial_axis(samples[i], umbrellas, params.medial, inside, i, &ms, sub);
       for (const auto& [stage, s] : ms.timings) add_timing(stats.timings, stage, s);
       ss.vertices = mesh.num_vertices();
       ss.faces = mesh.num_faces();

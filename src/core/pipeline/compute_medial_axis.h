@@ -44,8 +44,9 @@ struct ComputeResult {
 /// Checks parameters; throws InvalidInput naming the field (theta, rho, spacing, samples).
 void check_params(const ComputeParams& params);
 
-/// The sample spacing that params give for these solids (explicit spacing, or derived from the
-/// target count by surface area), and the approximate number of samples it yields.
+/// The sample spacing that params give for these solids (explicit spacing, or the one that
+/// compute_medial_axis settles on for the target count) and the number of samples it yields:
+/// it samples the solids as compute_medial_axis does, so the preview is exact.
 struct SamplingPlan {
   double spacing = 0.0;
   std::size_t estimated_samples = 0;
