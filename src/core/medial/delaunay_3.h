@@ -16,6 +16,7 @@ namespace cadmedial::internal {
 
 struct CellData {
   int id = -1;             ///< index into MedialComplex::cells once the cell is used
+  int visit = 0;           ///< marks a cell during a walk
 };
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;

@@ -248,33 +248,39 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
 // inscribed in spheres) give several Delaunay cells with one circumcentre: the true Voronoi
 // diagram has a single vertex there. Merging them removes zero-length Voronoi edges, which would
 // otherwise leave pinholes wherever the perturbation picked one selected facet over another.
-void merge_coincident_cells(MedialComplex& mc, double eps) {
+void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
   const size_t n = mc.cells.size();
-  std::vector<int> rep(n);
-  std::iota(rep.begin(), rep.end(), 0);
-  std::unordered_map<long long, std::vector<int>> grid;
-  auto key = [&](long long x, long long y, long long z) { return (x & 0x1FFFFF) | ((y & 0x1FFFFF) << 21) | ((z & 0x1FFFFF) << 42); };
-  const double cell = 4 * eps;
+  // Cells that share a circumcentre come from one cospherical set of samples, so they are
+  // adjacent in the triangulation (possibly through cells no face uses): walk neighbours.
+  std::vector<int> rep(n, -1);
+  std::vector<Cell> stack;
   for (size_t id = 0; id < n; ++id) {
-    const Point3& c = mc.centers[id];
-    const long long gx = static_cast<long long>(std::floor(c[0] / cell)), gy = static_cast<long long>(std::floor(c[1] / cell)),
-                    gz = static_cast<long long>(std::floor(c[2] / cell));
-    int found = -1;
-    for (long long x = gx - 1; x <= gx + 1 && found < 0; ++x)
-      for (long long y = gy - 1; y <= gy + 1 && found < 0; ++y)
-        for (long long z = gz - 1; z <= gz + 1 && found < 0; ++z) {
-          auto it = grid.find(key(x, y, z));
-          if (it == grid.end()) continue;
-          for (int other : it->second)
-            if (norm(sub(mc.centers[other], c)) <= eps) {
-              found = other;
-              break;
-            }
+    if (rep[id] >= 0) continue;
+    rep[id] = static_cast<int>(id);
+    const Point3 c = mc.centers[id];
+    const int mark = static_cast<int>(id) + 1;
+    mc.cells[id]->info().visit = mark;
+    stack.assign(1, mc.cells[id]);
+    while (!stack.empty()) {
+      const Cell cell = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 4; ++i) {
+        const Cell nb = cell->neighbor(i);
+        if (nb->info().visit == mark || dt.is_infinite(nb)) continue;
+        Point3 x;
+        if (nb->info().id >= 0) {
+          x = mc.centers[nb->info().id];
+        } else {
+          const K::Point_3 p = CGAL::circumcenter(nb->vertex(0)->point(), nb->vertex(1)->point(),
+                                                  nb->vertex(2)->point(), nb->vertex(3)->point());
+          x = {p.x(), p.y(), p.z()};
         }
-    if (found >= 0)
-      rep[id] = found;
-    else
-      grid[key(gx, gy, gz)].push_back(static_cast<int>(id));
+        if (!(norm(sub(x, c)) <= eps)) continue;  // also for the NaN centre of a flat cell
+        nb->info().visit = mark;
+        if (nb->info().id >= 0) rep[nb->info().id] = static_cast<int>(id);
+        stack.push_back(nb);
+      }
+    }
   }
   // The merged vertex takes the smallest of its members' positions: CGAL visits edges in an order
   // that depends on memory addresses, so "the first member" would differ from run to run.
@@ -300,10 +306,17 @@ void merge_coincident_cells(MedialComplex& mc, double eps) {
     while (face.size() > 1 && face.front() == face.back()) face.pop_back();
     // A sphere's facets all shrink to its centre: keep the point.
     if (face.size() == 1 && face[0] >= 0) mc.points.push_back(face[0]);
-    key_nodes = face;
-    std::sort(key_nodes.begin(), key_nodes.end());
-    if (std::unique(key_nodes.begin(), key_nodes.end()) != key_nodes.end() || face.size() < 3) continue;
-    if (!seen.insert(key_nodes).second) continue;
+    if (face.size() < 3) continue;
+    // Only faces that lost a corner to a merge can repeat one or duplicate another face.
+    bool merged = false;
+    for (int k = mc.start[f]; k < mc.start[f + 1] && !merged; ++k)
+      merged = mc.nodes[k] >= 0 && rep[mc.nodes[k]] != mc.nodes[k];
+    if (merged) {
+      key_nodes = face;
+      std::sort(key_nodes.begin(), key_nodes.end());
+      if (std::unique(key_nodes.begin(), key_nodes.end()) != key_nodes.end()) continue;
+      if (!seen.insert(key_nodes).second) continue;
+    }
     nodes.insert(nodes.end(), face.begin(), face.end());
     start.push_back(static_cast<int>(nodes.size()));
     kind.push_back(mc.kind[f]);
@@ -437,7 +450,7 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
     for (const Point3& p : pts)
       for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
     diag2 = dot(sub(hi, lo), sub(hi, lo));
-    merge_coincident_cells(mc, 1e-9 * std::sqrt(diag2));
+    merge_coincident_cells(dt, mc, 1e-9 * std::sqrt(diag2));
   }
   const std::vector<std::uint8_t> in = label_inside(mc, samples, inside, st);
   MedialMesh mesh = extract_inner(mc, in, samples, solid_index, st);
