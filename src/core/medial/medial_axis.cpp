@@ -10,7 +10,7 @@
 #include "../errors.h"
 #include "delaunay_3.h"
 
-#include <CGAL/hilbert_sort.h>
+#include <CGAL/spatial_sort.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 
@@ -407,15 +407,15 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   Delaunay dt;
   std::vector<Vertex> handle(samples.size());
   {
-    // Hilbert order without CGAL's default random shuffle, whose state persists between calls:
-    // the same input gives the same triangulation, and so the same mesh, in every call.
+    // CGAL's spatial sort (Hilbert curve over a BRIO shuffle with its own fixed seed), as its
+    // range insert does, but keeping each sample's index.
     std::vector<K::Point_3> pts;
     pts.reserve(samples.size());
     for (const Point3& p : samples.points) pts.emplace_back(p[0], p[1], p[2]);
     std::vector<std::size_t> order(pts.size());
     std::iota(order.begin(), order.end(), 0);
     using Traits = CGAL::Spatial_sort_traits_adapter_3<K, CGAL::Pointer_property_map<K::Point_3>::type>;
-    CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(pts)));
+    CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(pts)));
     Vertex hint;
     for (std::size_t i : order) {
       const Vertex v = dt.insert(pts[i], hint == Vertex() ? Cell() : hint->cell());
