@@ -10,6 +10,10 @@
 #include "../errors.h"
 #include "delaunay_3.h"
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+
 #include <CGAL/spatial_sort.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
@@ -200,8 +204,62 @@ int vote(const Samples& samples, int s, const Point3& x) {
   return 0;
 }
 
-std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const InsideTest& inside,
-                                       MedialAxisStats& st) {
+// The face-by-face reconstruction is a closed triangle mesh within its sag of the true surface.
+// A point farther from it than that sag, whose nearest mesh point lies inside a triangle, is on
+// the side of that triangle's outward normal: inside (1), outside (0), or undecided (-1).
+class ReconstructionSide {
+ public:
+  ReconstructionSide(const Samples& s, const Umbrellas& u) : s_(s) {
+    tris_.reserve(u.triangles.size());
+    for (const auto& t : u.triangles) {
+      tris_.emplace_back(point(t[0]), point(t[1]), point(t[2]));
+      ids_.push_back(t);
+    }
+    tree_.insert(tris_.begin(), tris_.end());
+    if (!tris_.empty()) tree_.accelerate_distance_queries();
+  }
+
+  int side(const Point3& x) const {
+    if (tris_.empty()) return -1;
+    const K::Point_3 q(x[0], x[1], x[2]);
+    const auto [closest, it] = tree_.closest_point_and_primitive(q);
+    const std::size_t t = static_cast<std::size_t>(it - tris_.begin());
+    const auto& tri = tris_[t];
+    const K::Vector_3 n = CGAL::cross_product(tri[1] - tri[0], tri[2] - tri[0]);
+    const double n_len = std::sqrt(n.squared_length());
+    if (n_len <= 0) return -1;
+    // Outward: agree with the samples' exact normals.
+    Point3 avg{0, 0, 0};
+    double sag = 0, edge2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int v = ids_[t][k];
+      for (int c = 0; c < 3; ++c) avg[c] += s_.normal[v][c];
+      sag = std::max(sag, static_cast<double>(s_.curvature[v]));
+      edge2 = std::max(edge2, (tri[(k + 1) % 3] - tri[k]).squared_length());
+    }
+    const double orient = avg[0] * n.x() + avg[1] * n.y() + avg[2] * n.z();
+    if (orient == 0) return -1;
+    sag = sag * edge2 / 8.0 + 1e-12 * std::sqrt(edge2);
+    const K::Vector_3 d = q - closest;
+    const double dist = std::sqrt(d.squared_length());
+    const double along = (d * n) / n_len * (orient > 0 ? 1 : -1);
+    // The nearest point is interior to the triangle when d runs along its normal.
+    if (dist <= sag || std::abs(along) < 0.999 * dist) return -1;
+    return along < 0 ? 1 : 0;
+  }
+
+ private:
+  K::Point_3 point(int i) const { return {s_.points[i][0], s_.points[i][1], s_.points[i][2]}; }
+  using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+  const Samples& s_;
+  std::vector<K::Triangle_3> tris_;
+  std::vector<std::array<int, 3>> ids_;
+  Tree tree_;
+};
+
+std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
+                                       const InsideTest& inside, MedialAxisStats& st) {
   const size_t n = mc.cells.size();
   std::vector<std::uint8_t> label(n, 0);
   std::vector<int> unsure;
@@ -232,6 +290,19 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
       label[id] = 0;
     else
       unsure.push_back(static_cast<int>(id));
+  }
+  if (!unsure.empty()) {
+    // Then the reconstruction mesh; what it cannot settle goes to the exact B-rep classifier.
+    const ReconstructionSide mesh(samples, umbrellas);
+    std::vector<int> still;
+    for (int id : unsure) {
+      const int side = mesh.side(mc.centers[id]);
+      if (side < 0)
+        still.push_back(id);
+      else
+        label[id] = static_cast<std::uint8_t>(side);
+    }
+    unsure.swap(still);
   }
   if (!unsure.empty()) {
     std::vector<Point3> pts;
@@ -291,6 +362,8 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
       mc.radii[r] = mc.radii[id];
     }
   }
+  std::vector<int> group_size(n, 0);
+  for (size_t id = 0; id < n; ++id) ++group_size[rep[id]];
   // Rewrite faces: drop repeated corners, then faces left with fewer than three, then duplicates.
   std::vector<int> start{0}, nodes;
   std::vector<FaceKind> kind;
@@ -307,10 +380,10 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
     // A sphere's facets all shrink to its centre: keep the point.
     if (face.size() == 1 && face[0] >= 0) mc.points.push_back(face[0]);
     if (face.size() < 3) continue;
-    // Only faces that lost a corner to a merge can repeat one or duplicate another face.
+    // Only faces with a corner in a merged group can repeat one or duplicate another face.
     bool merged = false;
     for (int k = mc.start[f]; k < mc.start[f + 1] && !merged; ++k)
-      merged = mc.nodes[k] >= 0 && rep[mc.nodes[k]] != mc.nodes[k];
+      merged = mc.nodes[k] >= 0 && group_size[rep[mc.nodes[k]]] > 1;
     if (merged) {
       key_nodes = face;
       std::sort(key_nodes.begin(), key_nodes.end());
@@ -452,7 +525,7 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
     diag2 = dot(sub(hi, lo), sub(hi, lo));
     merge_coincident_cells(dt, mc, 1e-9 * std::sqrt(diag2));
   }
-  const std::vector<std::uint8_t> in = label_inside(mc, samples, inside, st);
+  const std::vector<std::uint8_t> in = label_inside(mc, samples, umbrellas, inside, st);
   MedialMesh mesh = extract_inner(mc, in, samples, solid_index, st);
   st.timings.push_back({"inner", seconds_since(t0)});
   if (stats_out) *stats_out = st;
