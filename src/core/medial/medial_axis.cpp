@@ -61,24 +61,32 @@ TriangleGeometry triangle_geometry(const Samples& samples, const Umbrellas& umbr
 class Selection {
  public:
   Selection(const Samples& s, const Umbrellas& u, const MedialParams& params)
-      : s_(s), u_(u), g_(triangle_geometry(s, u)),
-        sin_theta_(std::sin(params.theta_deg * 3.14159265358979323846 / 180.0)), rho_(params.rho) {}
+      : s_(s), u_(u), sin_theta_(std::sin(params.theta_deg * 3.14159265358979323846 / 180.0)), rho_(params.rho) {
+    // Each sample's umbrella normals side by side, and its largest circumradius: the Ratio
+    // condition against every triangle is one comparison against the largest.
+    const TriangleGeometry g = triangle_geometry(s, u);
+    normals_.resize(u.incident.size());
+    max_radius_.assign(s.size(), 0.0);
+    for (size_t p = 0; p < s.size(); ++p)
+      for (int k = u.start[p]; k < u.start[p + 1]; ++k) {
+        normals_[k] = g.normal[u.incident[k]];
+        max_radius_[p] = std::max(max_radius_[p], g.radius[u.incident[k]]);
+      }
+  }
 
   bool passes(int p, int q) const {
-    if (u_.size(p) == 0) return false;
+    const int begin = u_.start[p], end = u_.start[p + 1];
+    if (begin == end) return false;
     const Point3 d = sub(s_.points[q], s_.points[p]);
     const double len = norm(d);
     if (len <= 0) return false;
-    bool angle = true, ratio = true;
-    for (int k = u_.start[p]; k < u_.start[p + 1]; ++k) {
-      const int t = u_.incident[k];
-      // Angle [theta]: the acute angle between n_ptu and pq is below pi/2 - theta for every
-      // umbrella triangle, i.e. |cos| > sin(theta).
-      if (angle && std::abs(dot(g_.normal[t], d)) <= sin_theta_ * len) angle = false;
-      // Ratio [rho]: |pq| / R_ptu > rho for every umbrella triangle.
-      if (ratio && len <= rho_ * g_.radius[t]) ratio = false;
-      if (!angle && !ratio) return false;
-    }
+    // Ratio [rho]: |pq| / R_ptu > rho for every umbrella triangle.
+    if (len > rho_ * max_radius_[p]) return true;
+    // Angle [theta]: the acute angle between n_ptu and pq is below pi/2 - theta for every
+    // umbrella triangle, i.e. |cos| > sin(theta).
+    const double bound = sin_theta_ * len;
+    for (int k = begin; k < end; ++k)
+      if (std::abs(dot(normals_[k], d)) <= bound) return false;
     return true;
   }
   // 4.2.6 line 6: either endpoint may pass.
@@ -87,8 +95,9 @@ class Selection {
  private:
   const Samples& s_;
   const Umbrellas& u_;
-  TriangleGeometry g_;
   double sin_theta_, rho_;
+  std::vector<Point3> normals_;
+  std::vector<double> max_radius_;
 };
 
 // 4.2.6 lines 5-8: the bounded Voronoi facets dual to selected Delaunay edges. Unbounded facets
@@ -97,7 +106,7 @@ void select_facets(const Delaunay& dt, const Selection& sel, MedialComplex& mc, 
                    const Progress& progress) {
   std::vector<int> face;
   size_t count = 0;
-  const size_t total = dt.number_of_finite_edges();
+  const size_t total = 7 * dt.number_of_vertices();  // about; counting the edges is a full pass
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e, ++count) {
     if (count % 65536 == 0) report(progress, "selection", static_cast<double>(count) / std::max<size_t>(1, total));
     const int p = e->first->vertex(e->second)->info(), q = e->first->vertex(e->third)->info();
