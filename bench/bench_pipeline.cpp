@@ -13,8 +13,6 @@
 #include <string>
 #include <vector>
 
-#include <BRepClass3d_SolidClassifier.hxx>
-#include <gp_Pnt.hxx>
 
 #include "core/errors.h"
 #include "core/features/classify_features.h"
@@ -22,6 +20,7 @@
 #include "core/medial/medial_axis.h"
 #include "core/medial/reconstruct_faces.h"
 #include "core/pipeline/compute_medial_axis.h"
+#include "core/pipeline/exact_inside_test.h"
 #include "core/sampling/sample_solid.h"
 
 using namespace cadmedial;
@@ -66,15 +65,7 @@ Row run(const TopoDS_Solid& solid, std::size_t target, double spacing0) {
   t0 = Clock::now();
   const Umbrellas umbrellas = reconstruct_faces(samples);
   row.reconstruction = since(t0);
-  BRepClass3d_SolidClassifier classifier(solid);
-  InsideTest inside = [&](const std::vector<Point3>& pts) {
-    std::vector<std::uint8_t> out(pts.size());
-    for (size_t k = 0; k < pts.size(); ++k) {
-      classifier.Perform(gp_Pnt(pts[k][0], pts[k][1], pts[k][2]), 1e-7);
-      out[k] = classifier.State() == TopAbs_IN || classifier.State() == TopAbs_ON;
-    }
-    return out;
-  };
+  const InsideTest inside = exact_inside_test(solid, 1e-7);
   MedialAxisStats ms;
   const MedialMesh mesh = medial_axis(samples, umbrellas, MedialParams{}, inside, 0, &ms);
   row.medial = ms.timings;

@@ -34,6 +34,13 @@ Point3 cross(const Point3& a, const Point3& b) {
 }
 double norm(const Point3& a) { return std::sqrt(dot(a, a)); }
 
+std::pair<Point3, Point3> bounding_box(const std::vector<Point3>& pts) {
+  Point3 lo = pts.empty() ? Point3{0, 0, 0} : pts[0], hi = lo;
+  for (const Point3& p : pts)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  return {lo, hi};
+}
+
 // Unit normal and circumradius of every umbrella triangle.
 struct TriangleGeometry {
   std::vector<Point3> normal;
@@ -276,9 +283,7 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
   for (int node : mc.nodes)
     if (node >= 0) used[node] = 1;
   for (int node : mc.points) used[node] = 1;
-  Point3 lo = samples.points.empty() ? Point3{0, 0, 0} : samples.points[0], hi = lo;
-  for (const Point3& p : samples.points)
-    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  const auto [lo, hi] = bounding_box(samples.points);
   const double diag = norm(sub(hi, lo));
   for (size_t id = 0; id < n; ++id) {
     if (!used[id]) continue;
@@ -537,13 +542,8 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
 
   t0 = Clock::now();
   {
-    double diag2 = 0;
-    const auto& pts = samples.points;
-    Point3 lo = pts.empty() ? Point3{0, 0, 0} : pts[0], hi = lo;
-    for (const Point3& p : pts)
-      for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-    diag2 = dot(sub(hi, lo), sub(hi, lo));
-    merge_coincident_cells(dt, mc, 1e-9 * std::sqrt(diag2));
+    const auto [lo, hi] = bounding_box(samples.points);
+    merge_coincident_cells(dt, mc, 1e-9 * norm(sub(hi, lo)));
   }
   const std::vector<std::uint8_t> in = label_inside(mc, samples, umbrellas, inside, st);
   MedialMesh mesh = extract_inner(mc, in, samples, solid_index, st);

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 
-#include <BRepClass3d_SolidClassifier.hxx>
 #include <Bnd_Box.hxx>
 #include <BRepBndLib.hxx>
 #include <Standard_Failure.hxx>
@@ -16,6 +15,7 @@
 #include "../medial/medial_axis.h"
 #include "../medial/reconstruct_faces.h"
 #include "../sampling/sample_solid.h"
+#include "exact_inside_test.h"
 
 namespace cadmedial {
 
@@ -200,17 +200,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       add_timing(stats.timings, "reconstruction", seconds_since(t0));
 
       // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt.
-      BRepClass3d_SolidClassifier classifier(solid);
-      const double tol = 1e-7 * std::max(m.diag, 1e-9);
-      InsideTest inside = [&](const std::vector<Point3>& pts) {
-        std::vector<std::uint8_t> out(pts.size());
-        for (size_t k = 0; k < pts.size(); ++k) {
-          classifier.Perform(gp_Pnt(pts[k][0], pts[k][1], pts[k][2]), tol);
-          const TopAbs_State s = classifier.State();
-          out[k] = (s == TopAbs_IN || s == TopAbs_ON) ? 1 : 0;
-        }
-        return out;
-      };
+      const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9));
       MedialAxisStats ms;
       const MedialMesh mesh = medial_axis(samples[i], umbrellas, params.medial, inside, i, &ms, sub);
       for (const auto& [stage, s] : ms.timings) add_timing(stats.timings, stage, s);
