@@ -21,9 +21,12 @@ class PointGrid {
   bool any_near(const Point3& p, double radius, const Visit& visit) const {
     const int64_t cx = cell_of(p[0]), cy = cell_of(p[1]), cz = cell_of(p[2]);
     const int reach = radius <= cell_ ? 1 : static_cast<int>(std::ceil(radius / cell_));
+    // The point's own cell first: while sampling, most candidates are turned down there.
+    if (visit_cell(key(cx, cy, cz), visit)) return true;
     for (int64_t x = cx - reach; x <= cx + reach; ++x)
       for (int64_t y = cy - reach; y <= cy + reach; ++y)
         for (int64_t z = cz - reach; z <= cz + reach; ++z) {
+          if (x == cx && y == cy && z == cz) continue;
           auto it = cells_.find(key(x, y, z));
           if (it == cells_.end()) continue;
           for (int id : it->second)
@@ -33,6 +36,14 @@ class PointGrid {
   }
 
  private:
+  template <class Visit>
+  bool visit_cell(int64_t k, const Visit& visit) const {
+    auto it = cells_.find(k);
+    if (it == cells_.end()) return false;
+    for (int id : it->second)
+      if (visit(id)) return true;
+    return false;
+  }
   int64_t cell_of(double v) const { return static_cast<int64_t>(std::floor(v / cell_)); }
   static int64_t key(int64_t x, int64_t y, int64_t z) {
     return (x & 0x1FFFFF) | ((y & 0x1FFFFF) << 21) | ((z & 0x1FFFFF) << 42);
