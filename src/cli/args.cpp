@@ -29,6 +29,8 @@ std::string usage() {
       "  --rho R          Ratio condition threshold, > 0 (default 8)\n"
       "  --stats F        also write run statistics as JSON\n"
       "  --quiet          no progress lines on stderr\n"
+      "  --plain-medial   plain MEDIAL (section 3: pole umbrellas, no edge or corner completion),\n"
+      "                   for comparison; use with --theta 22.5\n"
       "\n"
       "Exit status: 0 success, 2 bad input or parameters, 1 internal error.\n";
 }
@@ -112,6 +114,9 @@ Args parse_args(const std::vector<std::string>& argv) {
       args.params.medial.theta_deg = theta;
     } else if (arg == "--rho") {
       args.params.medial.rho = positive(arg, take_value());
+    } else if (arg == "--plain-medial") {
+      no_value();
+      args.params.medial.plain_medial = true;
     } else if (arg == "-q" || arg == "--quiet") {
       no_value();
       args.quiet = true;

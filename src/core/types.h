@@ -53,6 +53,10 @@ struct SamplingParams {
 struct MedialParams {
   double theta_deg = 5.0;  ///< Angle condition threshold, degrees, in (0, 90)
   double rho = 8.0;        ///< Ratio condition threshold, > 0
+  /// Plain MEDIAL (section 3) instead of CAD_MEDIAL, for the ablation: umbrellas from the poles
+  /// (the Delaunay triangles dual to Voronoi edges that the tangent plane at p, normal to the
+  /// pole vector, crosses), no convex-edge or corner completion. The paper uses theta = 22.5.
+  bool plain_medial = false;
 };
 
 struct ComputeParams {

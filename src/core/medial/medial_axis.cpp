@@ -64,6 +64,79 @@ TriangleGeometry triangle_geometry(const Samples& samples, const Umbrellas& umbr
   return g;
 }
 
+// Section 3, MEDIAL's umbrellas (for the ablation only): the pole p+ is the farthest Voronoi
+// vertex of V_p (for an unbounded V_p, the average direction of its unbounded edges); U_p is the
+// set of Delaunay triangles at p whose dual Voronoi edges the plane through p normal to p+ - p
+// crosses.
+Umbrellas umbrellas_from_poles(const Delaunay& dt, std::size_t n) {
+  Umbrellas u;
+  u.start.assign(n + 1, 0);
+  std::vector<std::vector<int>> per_sample(n);
+  std::vector<Cell> cells;
+  std::vector<Delaunay::Facet> facets;
+  auto center = [](const Cell& c) {
+    const K::Point_3 x = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                            c->vertex(3)->point());
+    return K::Vector_3(x.x(), x.y(), x.z());
+  };
+  // Direction of the unbounded Voronoi edge dual to hull facet (c, i) of finite cell c: the
+  // facet's normal pointing away from c.
+  auto outward = [](const Cell& c, int i) {
+    const K::Point_3 &a = c->vertex((i + 1) % 4)->point(), &b = c->vertex((i + 2) % 4)->point(),
+                     &d = c->vertex((i + 3) % 4)->point();
+    K::Vector_3 nrm = CGAL::cross_product(b - a, d - a);
+    if (nrm * (c->vertex(i)->point() - a) > 0) nrm = -nrm;
+    const double l = std::sqrt(nrm.squared_length());
+    return l > 0 ? nrm / l : nrm;
+  };
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    const K::Vector_3 p(v->point().x(), v->point().y(), v->point().z());
+    cells.clear();
+    dt.incident_cells(v, std::back_inserter(cells));
+    K::Vector_3 pole(0, 0, 0), unbounded(0, 0, 0);
+    double far = -1;
+    bool open = false;
+    for (const Cell& c : cells) {
+      if (dt.is_infinite(c)) {
+        const Cell finite = c->neighbor(c->index(dt.infinite_vertex()));
+        unbounded = unbounded + outward(finite, finite->index(c));
+        open = true;
+        continue;
+      }
+      const K::Vector_3 x = center(c) - p;
+      if (x.squared_length() > far) far = x.squared_length(), pole = x;
+    }
+    if (open) pole = unbounded;
+    if (pole.squared_length() == 0) continue;
+    facets.clear();
+    dt.finite_incident_facets(v, std::back_inserter(facets));
+    auto& mine = per_sample[v->info()];
+    for (auto [c, i] : facets) {
+      Cell other = c->neighbor(i);
+      if (dt.is_infinite(c)) {  // look from the finite side
+        std::swap(c, other);
+        i = c->index(other);
+      }
+      // The dual Voronoi edge, a segment to the other circumcentre or a ray off the hull,
+      // crosses the plane when its ends lie on both sides, or the ray heads for the plane.
+      const double s1 = (center(c) - p) * pole;
+      const bool crosses = dt.is_infinite(other) ? (s1 == 0 || (outward(c, i) * pole) * s1 < 0)
+                                                 : s1 * ((center(other) - p) * pole) <= 0;
+      if (!crosses) continue;
+      std::array<int, 3> tri;
+      int k = 0;
+      for (int j = 0; j < 4; ++j)
+        if (j != i) tri[k++] = c->vertex(j)->info();
+      mine.push_back(static_cast<int>(u.triangles.size()));
+      u.triangles.push_back(tri);
+      u.face.push_back(-1);
+    }
+  }
+  for (size_t s = 0; s < n; ++s) u.start[s + 1] = u.start[s] + static_cast<int>(per_sample[s].size());
+  for (const auto& list : per_sample) u.incident.insert(u.incident.end(), list.begin(), list.end());
+  return u;
+}
+
 // Section 3: does Delaunay edge pq pass the Angle or the Ratio condition at p's umbrella?
 class Selection {
  public:
@@ -529,14 +602,17 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   report(progress, "selection", 0.0);
 
   t0 = Clock::now();
-  const Selection sel(samples, umbrellas, params);
+  const Umbrellas pole_umbrellas = params.plain_medial ? umbrellas_from_poles(dt, samples.size()) : Umbrellas();
+  const Selection sel(samples, params.plain_medial ? pole_umbrellas : umbrellas, params);
   MedialComplex mc;
   select_facets(dt, sel, mc, st, progress);
   st.timings.push_back({"selection", seconds_since(t0)});
 
   t0 = Clock::now();
-  complete_convex_edges(dt, handle, samples, mc, st);
-  complete_corners(dt, handle, samples, sel, mc, st);
+  if (!params.plain_medial) {
+    complete_convex_edges(dt, handle, samples, mc, st);
+    complete_corners(dt, handle, samples, sel, mc, st);
+  }
   st.timings.push_back({"completion", seconds_since(t0)});
   report(progress, "inner", 0.0);
 
