@@ -235,20 +235,10 @@ def test_python_save_to_unwritable_path(tmp_path, target):
 
 # ---- fuzzer findings (tests/data/bad/fuzz/) ------------------------------------------------------
 
-# Crashes inside OpenCASCADE's own BREP parser (BRepTools::Read), before any of our code sees a
-# shape: not fixed yet (docs/hardening.md). Run through the CLI in a subprocess so that a crash
-# fails one test instead of killing pytest.
-PARSER_CRASHES = {
-    "segv_offset_curve2d_null_basis.brep":
-        "OpenCASCADE 7.6 BRepTools::Read crashes (SIGSEGV in Geom2d_OffsetCurve::SetBasisCurve) on "
-        "an offset 2D curve whose basis curve has an unknown type code; see docs/hardening.md",
-}
-
-
+# Each was a crash (or an endless loop) before the fix named in tests/data/bad/README.md. Run through
+# the CLI in a subprocess so that a regression fails one test instead of killing pytest.
 @pytest.mark.parametrize("name", sorted(os.listdir(os.path.join(BAD, "fuzz"))))
 def test_fuzz_finding_is_refused_without_a_crash(cli, tmp_path, name):
-    if name in PARSER_CRASHES:
-        pytest.skip(PARSER_CRASHES[name])
     out = tmp_path / "out"
     out.mkdir()
     run = run_cli(cli, "compute", os.path.join(BAD, "fuzz", name), "-o", str(out / "axis.ply"), "--quiet")

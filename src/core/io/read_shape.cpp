@@ -10,6 +10,10 @@
 //   shape holds nothing else, the "no solid" message counts them so the user sees what was there.
 // Edge, face and vertex numbers in messages are 1-based indices of TopExp::MapShapes over the solid
 // (or shell), which is the numbering FreeCAD shows as Edge12, Face3, ...
+// OpenCASCADE's Linux build defines this; without it OCC_CATCH_SIGNALS (below) is empty and a fault
+// caught by OSD's handler aborts the process instead of becoming a Standard_Failure. It must come
+// before any OpenCASCADE header.
+#define OCC_CONVERT_SIGNALS
 #include "read_shape.h"
 
 #include <algorithm>
@@ -20,6 +24,10 @@
 #include <ios>
 #include <new>
 #include <sstream>
+
+#include <signal.h>
+
+#include <mutex>
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
@@ -35,8 +43,10 @@
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <IGESControl_Reader.hxx>
+#include <OSD.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Solid.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -103,6 +113,25 @@ std::string edge_location(const TopoDS_Edge& edge) {
 
 // ---- reading --------------------------------------------------------------------------------
 
+// OpenCASCADE's readers guard their geometry parsing with OCC_CATCH_SIGNALS (GeomTools_*Set::Read*:
+// an offset curve whose basis is unknown dereferences null, and the reader catches that and goes
+// on without the curve), but that only works once OSD::SetSignal has installed OpenCASCADE's
+// SIGSEGV/SIGBUS/SIGFPE/SIGILL handlers; without them the process dies (fuzz/fuzz_read_brep.cpp,
+// tests/data/bad/fuzz/). FreeCAD installs them at start-up; the CLI and a plain Python process
+// get them here, on the first read. Only the fault signals: SIGINT and the other job-control
+// signals keep their handlers (Python's KeyboardInterrupt, the shell's Ctrl-C), and floating-point
+// traps stay off.
+void enable_reader_fault_recovery() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    const int keep[] = {SIGINT, SIGHUP, SIGQUIT, SIGTERM, SIGABRT, SIGTRAP, SIGSYS, SIGCHLD, SIGPIPE};
+    struct sigaction saved[sizeof keep / sizeof keep[0]];
+    for (std::size_t i = 0; i < sizeof keep / sizeof keep[0]; ++i) ::sigaction(keep[i], nullptr, &saved[i]);
+    OSD::SetSignal(false);
+    for (std::size_t i = 0; i < sizeof keep / sizeof keep[0]; ++i) ::sigaction(keep[i], &saved[i], nullptr);
+  });
+}
+
 TopoDS_Shape read_step(const std::string& path) {
   STEPControl_Reader reader;
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
@@ -139,6 +168,7 @@ bool has_brep_header(std::istream& in) {
 // read instead: a failed read is always a broken file, since a valid one is read to its last
 // token and no further (eofbit alone, at the very end, does not throw).
 TopoDS_Shape parse_brep(std::istream& in, const std::string& context) {
+  enable_reader_fault_recovery();
   in.exceptions(std::ios::failbit | std::ios::badbit);
   TopoDS_Shape shape;
   try {
@@ -475,7 +505,9 @@ TopoDS_Shape read_shape_file(const std::string& path) {
   if (fs::is_regular_file(st) && fs::file_size(path, ec) == 0 && !ec) throw InvalidInput(path + ": the file is empty");
   if (!std::ifstream(path)) throw InvalidInput(path + ": cannot open for reading (permissions?)");
 
+  enable_reader_fault_recovery();
   try {
+    OCC_CATCH_SIGNALS
     TopoDS_Shape shape;
     switch (format) {
       case Format::Step: shape = read_step(path); break;
@@ -496,6 +528,7 @@ TopoDS_Shape read_shape_file(const std::string& path) {
 TopoDS_Shape read_brep_string(const std::string& text) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InvalidInput("BREP text: it is empty");
   try {
+    OCC_CATCH_SIGNALS
     std::istringstream in(text);
     if (!has_brep_header(in)) throw InvalidInput("BREP text: not BREP (no 'CASCADE Topology' header)");
     const TopoDS_Shape shape = parse_brep(in, "BREP text: ");
@@ -508,7 +541,11 @@ TopoDS_Shape read_brep_string(const std::string& text) {
 
 std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped) {
   if (shape.IsNull()) throw InvalidInput("the shape is empty (null)");
+  enable_reader_fault_recovery();
   try {
+    // A fault inside OpenCASCADE on broken geometry (sewing or checking a shape that the reader
+    // left half-built) becomes a Standard_Failure, caught below (see enable_reader_fault_recovery).
+    OCC_CATCH_SIGNALS
     check_geometry(shape);
     Parts parts;
     collect(shape, parts);
