@@ -8,7 +8,7 @@ cd "$(dirname "$0")"
 SECONDS_TO_RUN=${1:-300}
 [ -x build/fuzz_read_brep ] || bash build.sh
 mkdir -p build/corpus build/seeds build/artifacts
-find ../tests/data ../tests/python/data ../examples -name '*.brep' -size -64k -exec cp {} build/seeds/ \; 2>/dev/null || true
+find ../tests/data ../tests/python/data ../examples -name '*.brep' -size -64k -not -path '*fuzz-slow*' -exec cp {} build/seeds/ \; 2>/dev/null || true
 # detect_leaks=0: OpenCASCADE keeps its handles in global caches (the messenger, the type registry)
 # that LeakSanitizer reports at exit on every run.
 ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=0} \
