@@ -1,6 +1,7 @@
 """The public entry points: compute, plan_sampling, load, read_shape."""
 
 import json
+import math
 import os
 from typing import NamedTuple
 
@@ -43,12 +44,40 @@ def read_shape(source):
     return _core.read_shape_file(source)
 
 
+def _number(name, value):
+    """float(value), or InvalidInput naming the parameter (float() would raise a bare ValueError
+    or TypeError that does not say which one)."""
+    if isinstance(value, bool):
+        raise _core.InvalidInput("%s must be a number, got %r" % (name, value))
+    try:
+        return float(value)
+    except (TypeError, ValueError, OverflowError):
+        raise _core.InvalidInput("%s must be a number, got %r" % (name, value)) from None
+
+
+# The engine's own limit is 2e7 samples; past the range of a C long long the binding could not
+# even pass the number on.
+_MAX_SAMPLES = 2 ** 62
+
+
 def _density(spacing, samples):
     # None means "not given"; the engine takes 0 for that.
-    if samples is not None and (isinstance(samples, bool) or int(samples) != samples):
-        raise _core.InvalidInput("samples must be a whole number, got %r" % (samples,))
-    return (0.0 if spacing is None else float(spacing),
-            0 if samples is None else int(samples))
+    if samples is not None:
+        count = _number("samples", samples)
+        if not math.isfinite(count) or count != int(count):
+            raise _core.InvalidInput("samples must be a whole number, got %r" % (samples,))
+        if abs(int(count)) > _MAX_SAMPLES:
+            raise _core.InvalidInput("samples must be at most 20000000, got %r" % (samples,))
+        if count <= 0:
+            raise _core.InvalidInput("samples must be > 0, got %r" % (samples,))
+        samples = int(count)
+    if spacing is not None:
+        spacing = _number("spacing", spacing)
+        # The engine reads 0 as "derive from samples": an explicit 0 is a mistake, say so.
+        if not spacing > 0:
+            raise _core.InvalidInput("spacing must be > 0, got %r" % (spacing,))
+    return (0.0 if spacing is None else spacing,
+            0 if samples is None else samples)
 
 
 def plan_sampling(source, spacing=None, samples=None):
@@ -75,8 +104,8 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
     """
     shape = read_shape(source)
     spacing, samples = _density(spacing, samples)
-    mesh, stats = _core.compute_medial_axis(shape, spacing, samples, float(theta), float(rho),
-                                            progress)
+    mesh, stats = _core.compute_medial_axis(shape, spacing, samples, _number("theta", theta),
+                                            _number("rho", rho), progress)
     return MedialAxisResult(mesh, json.loads(stats))
 
 

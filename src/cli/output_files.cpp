@@ -19,6 +19,9 @@ namespace cadmedial::cli {
 namespace fs = std::filesystem;
 
 void check_mesh_extension(const std::string& path) {
+  std::error_code ec;
+  // A directory has no extension either: say what it is rather than "unknown output type ''".
+  if (fs::is_directory(path, ec)) throw InvalidInput(path + ": is a directory, not an output file");
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   if (ext != ".ply" && ext != ".obj" && ext != ".ma")

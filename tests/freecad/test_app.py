@@ -210,3 +210,24 @@ def test_freecadcmd_example_writes_a_document(tmp_path, data):
         assert feature.Status == "ok" and feature.Mesh.CountPoints == feature.VertexCount > 0
     finally:
         FreeCAD.closeDocument(doc.Name)
+
+
+BAD_DATA = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "data", "bad"))
+
+
+@pytest.mark.parametrize("name, fragment", [
+    ("open_shell.brep", "the shell is open"),
+    ("nonmanifold_edge.brep", "non-manifold"),
+    ("zero_volume.brep", "zero volume"),
+    ("fuzz/segv_plane_zero_normal.brep", "face 3 has (no|a degenerate) surface"),
+])
+def test_bad_shape_is_refused_and_adds_nothing(doc, name, fragment):
+    # The bad-input corpus (tests/data/bad/README.md) as a Part::Feature source: refused with the
+    # engine's message, no document object left behind, FreeCAD still alive.
+    part = doc.addObject("Part::Feature", "Bad")
+    part.Shape = Part.read(os.path.join(BAD_DATA, name))
+    doc.recompute()
+    names = [o.Name for o in doc.Objects]
+    with pytest.raises(cadmedial.InvalidInput, match=fragment):
+        medial_app.make_medial_axis(part, samples=SAMPLES)
+    assert [o.Name for o in doc.Objects] == names

@@ -10,6 +10,10 @@
 //   shape holds nothing else, the "no solid" message counts them so the user sees what was there.
 // Edge, face and vertex numbers in messages are 1-based indices of TopExp::MapShapes over the solid
 // (or shell), which is the numbering FreeCAD shows as Edge12, Face3, ...
+// OpenCASCADE's Linux build defines this; without it OCC_CATCH_SIGNALS (below) is empty and a fault
+// caught by OSD's handler aborts the process instead of becoming a Standard_Failure. It must come
+// before any OpenCASCADE header.
+#define OCC_CONVERT_SIGNALS
 #include "read_shape.h"
 
 #include <algorithm>
@@ -17,7 +21,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <ios>
+#include <new>
 #include <sstream>
+
+#include <signal.h>
+
+#include <mutex>
 
 #include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
@@ -33,8 +43,10 @@
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <IGESControl_Reader.hxx>
+#include <OSD.hxx>
 #include <STEPControl_Reader.hxx>
 #include <ShapeFix_Solid.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -47,6 +59,21 @@
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <Geom_Curve.hxx>
+#include <BRep_CurveRepresentation.hxx>
+#include <BRep_GCurve.hxx>
+#include <BRep_ListOfCurveRepresentation.hxx>
+#include <BRep_TEdge.hxx>
+#include <Geom2d_Conic.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <Geom_Conic.hxx>
+#include <Geom_ElementarySurface.hxx>
+#include <Geom_Line.hxx>
+#include <Geom_OffsetSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_Surface.hxx>
+#include <Geom_TrimmedCurve.hxx>
 
 #include "../errors.h"
 
@@ -86,6 +113,25 @@ std::string edge_location(const TopoDS_Edge& edge) {
 
 // ---- reading --------------------------------------------------------------------------------
 
+// OpenCASCADE's readers guard their geometry parsing with OCC_CATCH_SIGNALS (GeomTools_*Set::Read*:
+// an offset curve whose basis is unknown dereferences null, and the reader catches that and goes
+// on without the curve), but that only works once OSD::SetSignal has installed OpenCASCADE's
+// SIGSEGV/SIGBUS/SIGFPE/SIGILL handlers; without them the process dies (fuzz/fuzz_read_brep.cpp,
+// tests/data/bad/fuzz/). FreeCAD installs them at start-up; the CLI and a plain Python process
+// get them here, on the first read. Only the fault signals: SIGINT and the other job-control
+// signals keep their handlers (Python's KeyboardInterrupt, the shell's Ctrl-C), and floating-point
+// traps stay off.
+void enable_reader_fault_recovery() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    const int keep[] = {SIGINT, SIGHUP, SIGQUIT, SIGTERM, SIGABRT, SIGTRAP, SIGSYS, SIGCHLD, SIGPIPE};
+    struct sigaction saved[sizeof keep / sizeof keep[0]];
+    for (std::size_t i = 0; i < sizeof keep / sizeof keep[0]; ++i) ::sigaction(keep[i], nullptr, &saved[i]);
+    OSD::SetSignal(false);
+    for (std::size_t i = 0; i < sizeof keep / sizeof keep[0]; ++i) ::sigaction(keep[i], &saved[i], nullptr);
+  });
+}
+
 TopoDS_Shape read_step(const std::string& path) {
   STEPControl_Reader reader;
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
@@ -115,13 +161,34 @@ bool has_brep_header(std::istream& in) {
   return head.find("CASCADE Topology V") != std::string::npos;
 }
 
+// BRepTools::Read loops over a shape's sub-shape list until it reads the '*' that ends it. When
+// the stream fails first (the text is truncated, or a number is not a number), every later read
+// is a no-op and that loop never ends, appending the same sub-shape until memory runs out (found
+// by fuzz/fuzz_read_brep.cpp; tests/data/bad/fuzz/). So the stream throws on the first failed
+// read instead: a failed read is always a broken file, since a valid one is read to its last
+// token and no further (eofbit alone, at the very end, does not throw).
+TopoDS_Shape parse_brep(std::istream& in, const std::string& context) {
+  enable_reader_fault_recovery();
+  in.exceptions(std::ios::failbit | std::ios::badbit);
+  TopoDS_Shape shape;
+  try {
+    BRep_Builder builder;
+    BRepTools::Read(shape, in, builder);
+  } catch (const std::ios_base::failure&) {
+    throw InvalidInput(context + "not valid BREP (truncated, or a malformed number near byte " +
+                       std::to_string(std::max<long long>(0, static_cast<long long>(in.rdbuf()->pubseekoff(0, std::ios::cur, std::ios::in)))) + ")");
+  } catch (const std::bad_alloc&) {
+    throw InvalidInput(context + "not valid BREP (a count in it asks for more memory than there is)");
+  }
+  in.exceptions(std::ios::goodbit);
+  return shape;
+}
+
 TopoDS_Shape read_brep_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InvalidInput(path + ": cannot open for reading");
   if (!has_brep_header(in)) throw InvalidInput(path + ": not a BREP file (no 'CASCADE Topology' header)");
-  TopoDS_Shape shape;
-  BRep_Builder builder;
-  BRepTools::Read(shape, in, builder);
+  const TopoDS_Shape shape = parse_brep(in, path + ": ");
   if (shape.IsNull()) throw InvalidInput(path + ": not a BREP file, or it holds no shape");
   return shape;
 }
@@ -211,6 +278,114 @@ double diagonal(const TopoDS_Shape& shape) {
   BRepBndLib::Add(shape, box);
   if (box.IsVoid()) return 0.0;
   return std::sqrt(box.SquareExtent());
+}
+
+// ---- geometry sanity ------------------------------------------------------------------------
+//
+// OpenCASCADE's release build does not check gp_Dir's norm (Standard_ConstructionError is compiled
+// out), so BREP text can hand it a plane with a zero normal, a line with a zero direction or NaN
+// coordinates; BRepCheck_Analyzer then dereferences null results and crashes (SIGSEGV in
+// BRepCheck_Edge::InContext, found by fuzz/fuzz_read_brep.cpp). These cheap checks refuse such
+// geometry first.
+
+bool unit(const gp_XYZ& d) { return std::isfinite(d.Modulus()) && std::abs(d.Modulus() - 1.0) < 1e-6; }
+bool unit(const gp_XY& d) { return std::isfinite(d.Modulus()) && std::abs(d.Modulus() - 1.0) < 1e-6; }
+bool finite(const gp_XYZ& p) { return std::isfinite(p.X()) && std::isfinite(p.Y()) && std::isfinite(p.Z()); }
+bool finite(const gp_XY& p) { return std::isfinite(p.X()) && std::isfinite(p.Y()); }
+
+bool sane(const gp_Ax3& a) {
+  return finite(a.Location().XYZ()) && unit(a.Direction().XYZ()) && unit(a.XDirection().XYZ()) &&
+         unit(a.YDirection().XYZ()) && std::abs(a.Direction().XYZ().Dot(a.XDirection().XYZ())) < 1e-6;
+}
+bool sane(const gp_Ax2& a) {
+  return finite(a.Location().XYZ()) && unit(a.Direction().XYZ()) && unit(a.XDirection().XYZ()) &&
+         unit(a.YDirection().XYZ()) && std::abs(a.Direction().XYZ().Dot(a.XDirection().XYZ())) < 1e-6;
+}
+
+bool sane_surface(Handle(Geom_Surface) s) {
+  for (int depth = 0; depth < 16 && !s.IsNull(); ++depth) {
+    if (auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(s)) s = t->BasisSurface();
+    else if (auto o = Handle(Geom_OffsetSurface)::DownCast(s)) {
+      if (!std::isfinite(o->Offset())) return false;
+      s = o->BasisSurface();
+    } else break;
+  }
+  if (s.IsNull()) return false;
+  if (auto e = Handle(Geom_ElementarySurface)::DownCast(s)) return sane(e->Position());
+  return true;
+}
+
+bool sane_curve(Handle(Geom_Curve) c) {
+  for (int depth = 0; depth < 16 && !c.IsNull(); ++depth) {
+    auto t = Handle(Geom_TrimmedCurve)::DownCast(c);
+    if (t.IsNull()) break;
+    c = t->BasisCurve();
+  }
+  if (c.IsNull()) return false;
+  if (auto l = Handle(Geom_Line)::DownCast(c))
+    return finite(l->Position().Location().XYZ()) && unit(l->Position().Direction().XYZ());
+  if (auto k = Handle(Geom_Conic)::DownCast(c)) return sane(k->Position());
+  return true;
+}
+
+bool sane_curve(Handle(Geom2d_Curve) c) {
+  for (int depth = 0; depth < 16 && !c.IsNull(); ++depth) {
+    auto t = Handle(Geom2d_TrimmedCurve)::DownCast(c);
+    if (t.IsNull()) break;
+    c = t->BasisCurve();
+  }
+  if (c.IsNull()) return false;
+  if (auto l = Handle(Geom2d_Line)::DownCast(c))
+    return finite(l->Position().Location().XY()) && unit(l->Position().Direction().XY());
+  if (auto k = Handle(Geom2d_Conic)::DownCast(c)) {
+    const gp_Ax22d a = k->Position();
+    return finite(a.Location().XY()) && unit(a.XDirection().XY()) && unit(a.YDirection().XY());
+  }
+  return true;
+}
+
+// Throws InvalidInput naming the first face, edge or vertex (numbered over `shape`) whose geometry
+// is degenerate or not finite.
+void check_geometry(const TopoDS_Shape& shape) {
+  TopTools_IndexedMapOfShape subs;
+  TopExp::MapShapes(shape, TopAbs_VERTEX, subs);
+  for (int i = 1; i <= subs.Extent(); ++i) {
+    const TopoDS_Vertex& v = TopoDS::Vertex(subs(i));
+    if (!finite(BRep_Tool::Pnt(v).XYZ()) || !std::isfinite(BRep_Tool::Tolerance(v)))
+      throw InvalidInput("vertex " + std::to_string(i) + " has a coordinate or tolerance that is not a finite number");
+  }
+  subs.Clear();
+  TopExp::MapShapes(shape, TopAbs_EDGE, subs);
+  for (int i = 1; i <= subs.Extent(); ++i) {
+    const TopoDS_Edge& e = TopoDS::Edge(subs(i));
+    const auto* tedge = dynamic_cast<const BRep_TEdge*>(e.TShape().get());
+    if (!tedge) throw InvalidInput("edge " + std::to_string(i) + " is not an edge");
+    for (BRep_ListOfCurveRepresentation::Iterator it(tedge->Curves()); it.More(); it.Next()) {
+      const Handle(BRep_CurveRepresentation)& cr = it.Value();
+      bool ok = true;
+      if (auto g = Handle(BRep_GCurve)::DownCast(cr)) {
+        double first = 0, last = 0;
+        g->Range(first, last);
+        ok = std::isfinite(first) && std::isfinite(last);
+      }
+      if (ok && cr->IsCurve3D()) ok = cr->Curve3D().IsNull() || sane_curve(cr->Curve3D());
+      if (ok && cr->IsCurveOnSurface()) {
+        ok = sane_curve(cr->PCurve()) && sane_surface(cr->Surface());
+        if (ok && cr->IsCurveOnClosedSurface()) ok = sane_curve(cr->PCurve2());
+      }
+      if (!ok)
+        throw InvalidInput("edge " + std::to_string(i) + " has a degenerate curve (a zero direction, or a number that is not finite)");
+    }
+  }
+  subs.Clear();
+  TopExp::MapShapes(shape, TopAbs_FACE, subs);
+  for (int i = 1; i <= subs.Extent(); ++i) {
+    TopLoc_Location loc;
+    const Handle(Geom_Surface)& surface = BRep_Tool::Surface(TopoDS::Face(subs(i)), loc);
+    if (surface.IsNull()) throw InvalidInput("face " + std::to_string(i) + " has no surface");
+    if (!sane_surface(surface))
+      throw InvalidInput("face " + std::to_string(i) + " has a degenerate surface (a zero axis, or a number that is not finite)");
+  }
 }
 
 // Checks a solid; returns it, reversed when its volume came out negative (faces oriented inward).
@@ -330,7 +505,9 @@ TopoDS_Shape read_shape_file(const std::string& path) {
   if (fs::is_regular_file(st) && fs::file_size(path, ec) == 0 && !ec) throw InvalidInput(path + ": the file is empty");
   if (!std::ifstream(path)) throw InvalidInput(path + ": cannot open for reading (permissions?)");
 
+  enable_reader_fault_recovery();
   try {
+    OCC_CATCH_SIGNALS
     TopoDS_Shape shape;
     switch (format) {
       case Format::Step: shape = read_step(path); break;
@@ -351,11 +528,10 @@ TopoDS_Shape read_shape_file(const std::string& path) {
 TopoDS_Shape read_brep_string(const std::string& text) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InvalidInput("BREP text: it is empty");
   try {
+    OCC_CATCH_SIGNALS
     std::istringstream in(text);
     if (!has_brep_header(in)) throw InvalidInput("BREP text: not BREP (no 'CASCADE Topology' header)");
-    TopoDS_Shape shape;
-    BRep_Builder builder;
-    BRepTools::Read(shape, in, builder);
+    const TopoDS_Shape shape = parse_brep(in, "BREP text: ");
     if (shape.IsNull()) throw InvalidInput("BREP text: does not parse, or holds no shape");
     return shape;
   } catch (const Standard_Failure& e) {
@@ -365,7 +541,12 @@ TopoDS_Shape read_brep_string(const std::string& text) {
 
 std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped) {
   if (shape.IsNull()) throw InvalidInput("the shape is empty (null)");
+  enable_reader_fault_recovery();
   try {
+    // A fault inside OpenCASCADE on broken geometry (sewing or checking a shape that the reader
+    // left half-built) becomes a Standard_Failure, caught below (see enable_reader_fault_recovery).
+    OCC_CATCH_SIGNALS
+    check_geometry(shape);
     Parts parts;
     collect(shape, parts);
 
