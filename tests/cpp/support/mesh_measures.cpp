@@ -106,7 +106,9 @@ std::vector<int> weld_vertices(const MedialMesh& mesh, double scale) {
     // Hash grid of cell eps: coincident vertices are in the same or a neighbouring cell.
     struct Hash {
       std::size_t operator()(const std::array<long long, 3>& c) const {
-        return std::hash<long long>()(c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL);
+        // Unsigned: the products wrap instead of overflowing (undefined for signed).
+        const auto u = [](long long v) { return static_cast<unsigned long long>(v); };
+        return std::hash<unsigned long long>()(u(c[0]) * 73856093ULL ^ u(c[1]) * 19349663ULL ^ u(c[2]) * 83492791ULL);
       }
     };
     std::unordered_map<std::array<long long, 3>, std::vector<int>, Hash> grid;
