@@ -103,10 +103,10 @@ def exact_axis(name):
     from scipy.spatial import cKDTree
     if name in ("box", "plate", "wedge"):
         pts = _polytope_axis(name)
-        tree = cKDTree(pts)
+        tree = cKDTree(pts, balanced_tree=False, compact_nodes=False)
         return (lambda q: tree.query(q)[0]), pts
     curves = _meridian_curves(name)
-    tree = cKDTree(curves)
+    tree = cKDTree(curves, balanced_tree=False, compact_nodes=False)
 
     def dist(q):
         return tree.query(np.c_[np.hypot(q[:, 0], q[:, 1]), q[:, 2]])[0]

@@ -115,7 +115,7 @@ def main():
     comp = Part.makeCompound(solids) if solids else shape
     tm = rec["measure_seconds"] = {}
     t = time.time()
-    err, (P, T) = measures.reconstruction_error(comp, diag, V, R)
+    err, (P, T) = measures.reconstruction_error(comp, diag, V, R, h)
     tm["reconstruction_error"] = time.time() - t
     t = time.time()
     rec["recon"] = err
@@ -123,7 +123,7 @@ def main():
     rng = np.random.default_rng(5)
     dense = measures.sample_mesh(V, T3, h / 3, rng)
     from scipy.spatial import cKDTree
-    dtree = cKDTree(dense)
+    dtree = cKDTree(dense, balanced_tree=False, compact_nodes=False)
 
     if a.name in analytic.NAMES:
         dist, axis_pts = analytic.exact_axis(a.name)
@@ -156,9 +156,9 @@ def main():
     if not a.light:
         topo = measures.topology(r.faces.offsets, r.faces.indices, face_solid)
         per = []
-        for s, t in topo.items():
+        for s, tp in topo.items():
             es = measures.solid_euler(solids[s]) if s < len(solids) else None
-            per.append({"solid": s, **t, "solid_euler": es})
+            per.append({"solid": s, **tp, "solid_euler": es})
         rec["topology"] = per
         frac, n = measures.leakage(solids, V, 1e-6 * diag)
         rec["leakage"] = {"outside_fraction": frac, "tested": n}
