@@ -1,0 +1,210 @@
+"""Quality measures of a medial mesh against its solid (FreeCAD Part shape), all in numpy/scipy.
+
+Approximations (stated again in docs/RESULTS.md):
+ * The solid's surface S is a dense random sample of FreeCAD's tessellation (deflection 5e-4 of
+   the bounding-box diagonal, so points are within that of the exact surface).
+ * Union of medial balls U = union of B(c_i, r_i) over the output vertices. For a surface point y,
+   e(y) = min_i (|y - c_i| - r_i) is the signed distance to U when y is outside U (exact for a
+   union of balls). Candidates: the 8 centres nearest y and the 4 nearest y +- d n
+   (n the tessellation normal) for depths d = h/2 * 1.5^m up to the largest radius: a ball
+   touching y has its centre near y + r n. A missed ball can only make e(y) larger (pessimistic).
+   "uncovered" = max_y max(e(y), 0): surface no ball reaches.
+   S -> boundary of U: |e(y)|; inside U, -e(y) = max_i (r_i - |y - c_i|) is a lower bound of the
+   distance to the union's boundary.
+ * "stick out" = max_i (r_i - d(c_i, S)), d from the surface sample (k-d query within 1 % of it): overestimates d by at most 1 % plus
+   the sample's covering radius, so stick-out is underestimated by at most that (reported).
+ * Hausdorff(S, boundary U) = max of the two above. Pockets of the union's boundary deep inside
+   the solid (parts of the solid no ball covers that do not reach the surface) are not measured.
+"""
+import numpy as np
+from scipy.spatial import cKDTree
+
+
+def tessellate(shape, diag):
+    pts, tris = shape.tessellate(5e-4 * diag)
+    P = np.array([[p.x, p.y, p.z] for p in pts], float)
+    T = np.array(tris, int).reshape(-1, 3)
+    return P, T
+
+
+def sample_triangles(P, T, n, rng, normals=False):
+    a, b, c = P[T[:, 0]], P[T[:, 1]], P[T[:, 2]]
+    cr = np.cross(b - a, c - a)
+    area = 0.5 * np.linalg.norm(cr, axis=1)
+    if area.sum() <= 0:
+        return np.zeros((0, 3)), 0.0
+    k = rng.choice(len(T), n, p=area / area.sum())
+    u, v = rng.random(n), rng.random(n)
+    flip = u + v > 1
+    u[flip], v[flip] = 1 - u[flip], 1 - v[flip]
+    Y = a[k] + u[:, None] * (b[k] - a[k]) + v[:, None] * (c[k] - a[k])
+    if normals:
+        return Y, float(area.sum()), cr[k] / (2 * area[k][:, None])
+    return Y, float(area.sum())
+
+
+def signed_distance_to_balls(Y, N, C, R, h, k=4):
+    """e(y) = min_i (|y - c_i| - r_i) over candidate balls: the 8 centres nearest y, and the k
+    centres nearest y + d n and y - d n (n the surface normal at y) for depths d from h/2 to the
+    largest radius in steps of ratio 1.5 (a ball touching y has its centre near y + r n, where n
+    points inwards). Candidate search, so e(y) can only be overestimated (a ball missed)."""
+    # Coincident centres (many Voronoi vertices on a cylinder's axis) make k-d queries crawl.
+    scale = max(np.abs(C).max(), 1e-12) * 1e-9
+    _, keep = np.unique(np.round(np.c_[C, R] / scale), axis=0, return_index=True)
+    C, R = C[keep], R[keep]
+    tree = cKDTree(C, balanced_tree=False, compact_nodes=False)
+    _, j = tree.query(Y, min(8, len(C)))
+    j = j.reshape(len(Y), -1)
+    best = (np.linalg.norm(Y[:, None, :] - C[j], axis=2) - R[j]).min(1)
+    d = h / 2
+    kk = min(k, len(C))
+    while d < 1.5 * R.max():
+        for sgn in (1.0, -1.0):
+            _, j = tree.query(Y + sgn * d * N, kk)
+            j = j.reshape(len(Y), -1)
+            best = np.minimum(best, (np.linalg.norm(Y[:, None, :] - C[j], axis=2) - R[j]).min(1))
+        d *= 1.5
+    return best
+
+
+def reconstruction_error(shape, diag, V, R, h, n_surface=30_000, seed=0):
+    rng = np.random.default_rng(seed)
+    P, T = tessellate(shape, diag)
+    Y, area, N = sample_triangles(P, T, n_surface, rng, normals=True)
+    spacing = np.sqrt(area / n_surface)
+    e = signed_distance_to_balls(Y, N, V, R, h)
+    e_abs = np.abs(e)
+    # eps: ties (a cylinder axis point is equidistant from a whole ring) make exact queries crawl;
+    # d is then within 1 % of the distance to the sample.
+    d_c = cKDTree(Y, balanced_tree=False, compact_nodes=False).query(V, eps=0.01)[0]
+    stick = R - d_c
+    uncovered = max(float(e.max()), 0.0)
+    stick_max = max(float(stick.max()), 0.0)
+    to_boundary = float(e_abs.max())
+    return {
+        "surface_points": n_surface,
+        "surface_sample_spacing": float(spacing),
+        "uncovered_max": uncovered,
+        "uncovered_p99": float(max(np.percentile(e, 99), 0)),
+        "to_union_boundary_max": to_boundary,
+        "stick_out_max": stick_max,
+        "stick_out_p99": float(max(np.percentile(stick, 99), 0)),
+        "hausdorff": max(to_boundary, stick_max),
+    }, (P, T)
+
+
+def mesh_triangles(faces_start, faces_idx):
+    """Fan triangulation of polygon faces given CSR arrays."""
+    tris = []
+    for f in range(len(faces_start) - 1):
+        s, t = faces_start[f], faces_start[f + 1]
+        for q in range(s + 1, t - 1):
+            tris.append((faces_idx[s], faces_idx[q], faces_idx[q + 1]))
+    return np.array(tris, int).reshape(-1, 3)
+
+
+def sample_mesh(V, T, spacing, rng, cap=600_000):
+    a, b, c = V[T[:, 0]], V[T[:, 1]], V[T[:, 2]]
+    area = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    n = int(min(cap, max(1000, area.sum() / spacing ** 2)))
+    pts, _ = sample_triangles(V, T[area > 0], n, rng) if (area > 0).any() else (V, 0)
+    return np.vstack([V, pts])
+
+
+def topology(offsets, indices, face_solid):
+    """Per solid: connected components and V - E + F of the output mesh (vertices in faces)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    offsets = np.asarray(offsets, np.int64)
+    indices = np.asarray(indices, np.int64)
+    sizes = np.diff(offsets)
+    face_of = np.repeat(np.arange(len(sizes)), sizes)
+    k = np.arange(len(indices))
+    nxt = k + 1
+    last = offsets[1:] - 1
+    nxt[last[sizes > 0]] = offsets[:-1][sizes > 0]
+    out = {}
+    for s in np.unique(face_solid):
+        fm = np.asarray(face_solid) == s
+        km = fm[face_of]
+        a, b = indices[k[km]], indices[nxt[km]]
+        e = np.unique(np.c_[np.minimum(a, b), np.maximum(a, b)], axis=0)
+        verts = np.unique(indices[km])
+        n = int(indices.max()) + 1
+        g = coo_matrix((np.ones(len(e)), (e[:, 0], e[:, 1])), shape=(n, n))
+        _, lab = connected_components(g, directed=False)
+        comps = len(np.unique(lab[verts]))
+        out[int(s)] = {"components": comps, "euler": int(len(verts) - len(e) + fm.sum())}
+    return out
+
+
+def solid_euler(solid):
+    """Euler characteristic of a solid from its B-rep: half that of its boundary surface(s).
+
+    Boundary: V - E + sum over faces of (2 - wires), degenerate edges (sphere poles) not counted;
+    a face with w wires is a disc with w - 1 holes (seam edges cut a periodic face into a disc,
+    they count once as edges)."""
+    V = len(solid.Vertexes)
+    E = sum(1 for e in solid.Edges if not e.Degenerated)
+    F = sum(2 - len(f.Wires) for f in solid.Faces)
+    # Vertices only on degenerate edges (poles) are vertices of the cell complex too.
+    return (V - E + F) // 2
+
+
+def leakage(solid_shapes, V, tol, n=1500, seed=0):
+    rng = np.random.default_rng(seed)
+    idx = rng.choice(len(V), min(n, len(V)), replace=False)
+    from FreeCAD import Vector
+    outside = 0
+    for i in idx:
+        p = Vector(*V[i])
+        if not any(s.BoundBox.isInside(p) and s.isInside(p, tol, True) for s in solid_shapes):
+            outside += 1
+    return outside / len(idx), len(idx)
+
+
+def convex_edge_points(solids, h, angle_deg=10.0):
+    """Points every <= h/2 along the convex edges of the B-rep (dihedral turn > angle_deg) and
+    the non-concave corners (a vertex with an incident convex edge), with the edges' total length.
+
+    Convexity at a point p of an edge between faces with outward normals n1, n2: the point
+    p + eps (n2 - n1) is outside the solid for a convex edge, inside for a concave one."""
+    from FreeCAD import Vector
+    pts, corners, length = [], [], 0.0
+    for solid in solids:
+        edge_faces = {}
+        for fi, f in enumerate(solid.Faces):
+            for e in f.Edges:
+                edge_faces.setdefault(e.hashCode(), []).append((fi, f))
+        conv_vertices = set()
+        for e in solid.Edges:
+            if e.Degenerated:
+                continue
+            fl = edge_faces.get(e.hashCode(), [])
+            if len(fl) != 2 or fl[0][0] == fl[1][0]:
+                continue  # seam edge or non-manifold
+            L = e.Length
+            if L <= 0:
+                continue
+            k = max(1, int(np.ceil(L / (h / 2))))
+            params = np.linspace(e.FirstParameter, e.LastParameter, k + 1)
+            mid = e.valueAt(params[len(params) // 2])
+            try:
+                n = []
+                for _, f in fl:
+                    u, v = f.Surface.parameter(mid)
+                    n.append(f.normalAt(u, v))
+            except Exception:
+                continue
+            if n[0].getAngle(n[1]) < np.radians(angle_deg):
+                continue
+            eps = 1e-3 * max(h, 1e-9)
+            q = mid + (n[1] - n[0]) * eps
+            if solid.isInside(q, 1e-9, False):
+                continue  # concave
+            length += L
+            pts.extend([[p.x, p.y, p.z] for p in (e.valueAt(t) for t in params)])
+            for vx in e.Vertexes:
+                conv_vertices.add((round(vx.X, 9), round(vx.Y, 9), round(vx.Z, 9)))
+        corners.extend(conv_vertices)
+    return np.array(pts, float).reshape(-1, 3), np.array(corners, float).reshape(-1, 3), length

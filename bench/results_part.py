@@ -1,0 +1,173 @@
+"""One part of the results suite (run by bench/results.py in a subprocess, one per part).
+
+    results_part.py NAME --samples N --out FILE.json [--mesh FILE.npz] [--light]
+
+NAME is an analytic solid (bench/analytic.py NAMES) or a path under /work/shared/data/models.
+Writes a JSON record: engine stats, reconstruction error, accuracy (analytic solids), completeness,
+topology, leakage; or {"refused": message} when the engine or the reader refuses the part.
+--light skips topology and leakage (density sweeps).
+"""
+import argparse
+import json
+import os
+import sys
+import time
+
+import numpy as np
+
+sys.path.append("/usr/lib/freecad/lib")
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import FreeCAD  # noqa: E402,F401
+import Part  # noqa: E402
+
+import analytic  # noqa: E402
+import measures  # noqa: E402
+
+MODELS = "/work/shared/data/models"
+
+
+def fcstd_shape(path):
+    """The final solids of a FreeCAD document: its top-level objects (no parent) holding solids
+    (a PartDesign Body's shape is its tip)."""
+    try:
+        import PartDesign  # noqa: F401 - registers the PartDesign feature types
+    except ImportError:
+        pass
+    doc = FreeCAD.openDocument(path)
+    try:
+        doc.recompute()
+    except Exception:
+        pass
+    solids = []
+    for obj in doc.Objects:
+        if obj.InList or not hasattr(obj, "Shape"):
+            continue
+        if obj.TypeId in ("App::Origin", "App::Line", "App::Plane") or obj.TypeId.startswith("Sketcher"):
+            continue
+        solids.extend(obj.Shape.Solids)
+    kinds = sorted({o.TypeId for o in doc.Objects})
+    FreeCAD.closeDocument(doc.Name)
+    if not solids:
+        raise ValueError("no top-level object holds a solid after recompute (object types: %s)"
+                         % ", ".join(kinds))
+    return Part.makeCompound(solids)
+
+
+def load(name):
+    """(source for cadmedial, FreeCAD shape for the measures)."""
+    if name in analytic.NAMES:
+        s = analytic.make_shape(name)
+        return s, s
+    path = os.path.join(MODELS, name)
+    if path.lower().endswith(".fcstd"):
+        s = fcstd_shape(path)
+        return s, s
+    s = Part.Shape()
+    s.read(path)
+    return path, s
+
+
+def main():
+    if os.environ.get("BENCH_TRACE"):
+        import faulthandler
+        faulthandler.dump_traceback_later(int(os.environ["BENCH_TRACE"]), exit=True)
+    ap = argparse.ArgumentParser()
+    ap.add_argument("name")
+    ap.add_argument("--samples", type=int, default=20000)
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--mesh")
+    ap.add_argument("--light", action="store_true")
+    a = ap.parse_args()
+    import cadmedial
+
+    rec = {"name": a.name, "target_samples": a.samples}
+    t0 = time.time()
+    try:
+        source, shape = load(a.name)
+    except Exception as e:  # noqa: BLE001 - recorded, not hidden
+        rec["refused"] = "reader: %s" % e
+        json.dump(rec, open(a.out, "w"))
+        return
+    try:
+        t = time.time()
+        r = cadmedial.compute(source, samples=a.samples)
+        rec["wall_compute"] = time.time() - t
+    except Exception as e:  # noqa: BLE001
+        rec["refused"] = "%s: %s" % (type(e).__name__, e)
+        json.dump(rec, open(a.out, "w"))
+        return
+    st = r.stats
+    rec["stats"] = st
+    V = np.asarray(r.vertices, float)
+    R = np.asarray(r.radius, float)
+    face_solid = np.asarray(r.face_solid)
+    h = float(st["spacing"])
+    solids = shape.Solids
+    bb = shape.BoundBox
+    diag = bb.DiagonalLength
+    rec.update(diag=diag, h=h, vertices=len(V), faces=int(r.num_faces), solids=len(solids))
+    if len(V) == 0:
+        rec["refused"] = "empty output"
+        json.dump(rec, open(a.out, "w"))
+        return
+    comp = Part.makeCompound(solids) if solids else shape
+    tm = rec["measure_seconds"] = {}
+    t = time.time()
+    err, (P, T) = measures.reconstruction_error(comp, diag, V, R, h)
+    tm["reconstruction_error"] = time.time() - t
+    t = time.time()
+    rec["recon"] = err
+    T3 = np.asarray(r.triangles(), np.int64)
+    rng = np.random.default_rng(5)
+    dense = measures.sample_mesh(V, T3, h / 3, rng)
+    from scipy.spatial import cKDTree
+    dtree = cKDTree(dense, balanced_tree=False, compact_nodes=False)
+
+    if a.name in analytic.NAMES:
+        dist, axis_pts = analytic.exact_axis(a.name)
+        probe = np.vstack([V, V[T3].mean(1)]) if len(T3) else V
+        d_out = dist(probe)
+        d_in = dtree.query(axis_pts)[0]
+        rec["accuracy"] = {
+            "out_to_axis_p95_h": float(np.percentile(d_out, 95) / h),
+            "out_to_axis_max_h": float(d_out.max() / h),
+            "axis_to_out_p95_h": float(np.percentile(d_in, 95) / h),
+            "axis_to_out_max_h": float(d_in.max() / h),
+            "axis_samples": int(len(axis_pts)),
+        }
+        ep, cp = analytic.convex_features(a.name, h)
+        L = None
+    else:
+        ep, cp, L = measures.convex_edge_points(solids, h)
+    comp_rec = {"edge_points": int(len(ep)), "corners": int(len(cp)), "convex_edge_length": L}
+    if len(ep):
+        d = dtree.query(ep)[0]
+        comp_rec["edge_reached"] = float((d <= h).mean())
+        comp_rec["edge_max_h"] = float(d.max() / h)
+    if len(cp):
+        d = dtree.query(cp)[0]
+        comp_rec["corner_reached"] = float((d <= h).mean())
+    rec["completeness"] = comp_rec
+    tm["accuracy_completeness"] = time.time() - t
+    t = time.time()
+
+    if not a.light:
+        topo = measures.topology(r.faces.offsets, r.faces.indices, face_solid)
+        per = []
+        for s, tp in topo.items():
+            es = measures.solid_euler(solids[s]) if s < len(solids) else None
+            per.append({"solid": s, **tp, "solid_euler": es})
+        rec["topology"] = per
+        frac, n = measures.leakage(solids, V, 1e-6 * diag)
+        rec["leakage"] = {"outside_fraction": frac, "tested": n}
+        tm["topology_leakage"] = time.time() - t
+    if a.mesh:
+        np.savez_compressed(a.mesh, V=V, R=R, T=T3, P=P, Tp=T)
+    rec["wall_total"] = time.time() - t0
+    json.dump(rec, open(a.out, "w"))
+
+
+if __name__ == "__main__":
+    main()
