@@ -133,16 +133,22 @@ EdgeKind classify_edge(const Features& f, int e) {
   BRep_Tool::Range(edge, first, last);
   // Ends and interior: an edge can change character along its length (a blend that runs out).
   constexpr int kPoints = 9;
-  int convex = 0, concave = 0;
+  int convex = 0, concave = 0, defined = 0;
   for (int i = 0; i < kPoints; ++i) {
     const double t = first + (last - first) * i / (kPoints - 1);
-    const PointKind k = edge_point(f, e, t).kind;
+    PointKind k;
+    try {
+      k = edge_point(f, e, t).kind;
+    } catch (const GeometryError&) {
+      continue;  // a face's normal is undefined here (a collapsed B-spline boundary): no vote
+    }
+    ++defined;
     convex += k == PointKind::Convex;
     concave += k == PointKind::Concave;
   }
   if (convex == 0 && concave == 0) return EdgeKind::Smooth;
-  if (convex == kPoints) return EdgeKind::Convex;
-  if (concave == kPoints) return EdgeKind::Concave;
+  if (convex == defined) return EdgeKind::Convex;
+  if (concave == defined) return EdgeKind::Concave;
   return EdgeKind::Mixed;
 }
 
@@ -254,7 +260,11 @@ Features classify_features(const TopoDS_Solid& solid, double smooth_angle_deg) {
       sharp = true;
       // The character of the edge at this vertex, not on average.
       const double t = BRep_Tool::Parameter(vertex, edge);
-      if (edge_point(f, e, t).kind == PointKind::Convex) convex = true;
+      try {
+        if (edge_point(f, e, t).kind == PointKind::Convex) convex = true;
+      } catch (const GeometryError&) {
+        if (kind == EdgeKind::Convex) convex = true;  // normal undefined at the end: the edge says
+      }
     }
     f.nonconcave_corner[v] = convex;
     f.sharp_vertex[v] = sharp;
