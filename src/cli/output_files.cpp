@@ -2,6 +2,8 @@
 // atomically so that a failure or a kill never leaves a partial file for the next tool to read.
 #include "output_files.h"
 
+#include "core/io/write_atomically.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -41,22 +43,7 @@ void check_writable(const std::string& path) {
 }
 
 void write_text_atomically(const std::string& path, const std::string& text) {
-  const fs::path target(path);
-  const fs::path temp =
-      target.parent_path() / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()));
-  auto fail = [&](const std::string& why) {
-    std::error_code ignored;
-    fs::remove(temp, ignored);
-    throw InvalidInput(path + ": cannot write: " + why);
-  };
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) fail(std::strerror(errno));
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (out.fail()) fail("write failed (disk full?)");
-  }
-  if (std::rename(temp.c_str(), target.c_str()) != 0) fail(std::strerror(errno));
+  write_atomically(path, [&](std::ostream& out) { out.write(text.data(), static_cast<std::streamsize>(text.size())); });
 }
 
 }  // namespace cadmedial::cli

@@ -12,6 +12,7 @@
 //   vertex, and edges are the unique edges of those triangles, diagonals included. Read back,
 //   faces are those triangles, kind Voronoi, solid 0.
 #include "write_medial_mesh.h"
+#include "write_atomically.h"
 
 #include <algorithm>
 #include <atomic>
@@ -215,6 +216,16 @@ void write_medial_mesh(const MedialMesh& mesh, const std::string& path) {
   const Format format = format_of(path);  // refuse before touching the disk
   check_mesh(mesh);
 
+  write_atomically(path, [&](std::ostream& out) {
+    switch (format) {
+      case Format::Ply: write_ply(mesh, out); break;
+      case Format::Obj: write_obj(mesh, out); break;
+      case Format::Ma: write_ma(mesh, out); break;
+    }
+  });
+}
+
+void write_atomically(const std::string& path, const std::function<void(std::ostream&)>& write) {
   // The temporary file lives beside the target, so that rename() stays on one file system and
   // is atomic: readers see the old file or the complete new one, never a partial one.
   static std::atomic<unsigned> counter{0};
@@ -231,11 +242,7 @@ void write_medial_mesh(const MedialMesh& mesh, const std::string& path) {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out) fail(std::strerror(errno));
     try {
-      switch (format) {
-        case Format::Ply: write_ply(mesh, out); break;
-        case Format::Obj: write_obj(mesh, out); break;
-        case Format::Ma: write_ma(mesh, out); break;
-      }
+      write(out);
     } catch (const std::exception& e) {
       out.close();
       fail(e.what());
