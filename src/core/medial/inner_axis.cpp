@@ -1,0 +1,324 @@
+#include "inner_axis.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <set>
+#include <unordered_map>
+
+#include "geometry_3.h"
+
+namespace cadmedial::internal {
+
+namespace {
+
+// 4.2.5 with the exact solid at hand. A Voronoi vertex x is the centre of a ball through its
+// cell's samples p that holds no sample. Each sample votes with the side of its face's tangent
+// plane that x lies on (at a sharp edge, the two faces' half-spaces: inside both for convex,
+// either for concave). A vote counts only when x clears the plane by more than the surface can
+// bend within |x - p| (kappa |x - p|^2 / 2); the empty ball keeps other sheets of the surface
+// from passing between p and x unless the sampling missed them. Vertices with a dissenting vote
+// or none go to the exact B-rep classifier; vertices beyond the samples' box or with a ball
+// larger than it are outside.
+int vote(const Samples& samples, int s, const Point3& x) {
+  const Point3 d = sub(x, samples.points[s]);
+  const double r2 = dot(d, d);
+  const double margin = 0.5 * samples.curvature[s] * r2 + 1e-12 * std::sqrt(r2);
+  const SampleTag tag = samples.tag[s];
+  const bool on_edge = tag == SampleTag::Edge || tag == SampleTag::Ball;
+  if (tag == SampleTag::Face || tag == SampleTag::Triplet || (on_edge && samples.edge_convex[s] == 0)) {
+    const double a = dot(d, samples.normal[s]);
+    if (dot(samples.normal[s], samples.normal[s]) == 0) return 0;
+    return a < -margin ? 1 : a > margin ? -1 : 0;
+  }
+  if (on_edge) {
+    const double a1 = dot(d, samples.normal[s]), a2 = dot(d, samples.normal2[s]);
+    const bool in1 = a1 < -margin, in2 = a2 < -margin, out1 = a1 > margin, out2 = a2 > margin;
+    if (samples.edge_convex[s] == 1) return (in1 && in2) ? 1 : (out1 || out2) ? -1 : 0;
+    return (in1 || in2) ? 1 : (out1 && out2) ? -1 : 0;
+  }
+  return 0;
+}
+
+// The face-by-face reconstruction is a closed triangle mesh within its sag of the true surface.
+// A point farther from it than that sag, whose nearest mesh point lies inside a triangle, is on
+// the side of that triangle's outward normal: inside (1), outside (0), or undecided (-1).
+class ReconstructionSide {
+ public:
+  ReconstructionSide(const Samples& s, const Umbrellas& u) : s_(s) {
+    tris_.reserve(u.triangles.size());
+    for (const auto& t : u.triangles) {
+      tris_.emplace_back(point(t[0]), point(t[1]), point(t[2]));
+      ids_.push_back(t);
+    }
+    tree_.insert(tris_.begin(), tris_.end());
+    if (!tris_.empty()) tree_.accelerate_distance_queries();
+  }
+
+  int side(const Point3& x) const {
+    if (tris_.empty()) return -1;
+    const K::Point_3 q(x[0], x[1], x[2]);
+    const auto [closest, it] = tree_.closest_point_and_primitive(q);
+    const std::size_t t = static_cast<std::size_t>(it - tris_.begin());
+    const auto& tri = tris_[t];
+    const K::Vector_3 n = CGAL::cross_product(tri[1] - tri[0], tri[2] - tri[0]);
+    const double n_len = std::sqrt(n.squared_length());
+    if (n_len <= 0) return -1;
+    // Outward: agree with the samples' exact normals.
+    Point3 avg{0, 0, 0};
+    double sag = 0, edge2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int v = ids_[t][k];
+      for (int c = 0; c < 3; ++c) avg[c] += s_.normal[v][c];
+      sag = std::max(sag, static_cast<double>(s_.curvature[v]));
+      edge2 = std::max(edge2, (tri[(k + 1) % 3] - tri[k]).squared_length());
+    }
+    const double orient = avg[0] * n.x() + avg[1] * n.y() + avg[2] * n.z();
+    if (orient == 0) return -1;
+    sag = sag * edge2 / 8.0 + 1e-12 * std::sqrt(edge2);
+    const K::Vector_3 d = q - closest;
+    const double dist = std::sqrt(d.squared_length());
+    const double along = (d * n) / n_len * (orient > 0 ? 1 : -1);
+    // The nearest point is interior to the triangle when d runs along its normal.
+    if (dist <= sag || std::abs(along) < 0.999 * dist) return -1;
+    return along < 0 ? 1 : 0;
+  }
+
+ private:
+  K::Point_3 point(int i) const { return {s_.points[i][0], s_.points[i][1], s_.points[i][2]}; }
+  using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+  const Samples& s_;
+  std::vector<K::Triangle_3> tris_;
+  std::vector<std::array<int, 3>> ids_;
+  Tree tree_;
+};
+
+int find_root(std::vector<int>& parent, int x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+}  // namespace
+
+// Cospherical samples (regular edge samples and their triplets form right prisms, which are
+// inscribed in spheres) give several Delaunay cells with one circumcentre: the true Voronoi
+// diagram has a single vertex there. Merging them removes zero-length Voronoi edges, which would
+// otherwise leave pinholes wherever the perturbation picked one selected facet over another.
+void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
+  const size_t n = mc.cells.size();
+  // Cells that share a circumcentre come from one cospherical set of samples, so they are
+  // adjacent in the triangulation (possibly through cells no face uses): walk neighbours.
+  std::vector<int> rep(n, -1);
+  std::vector<Cell> stack;
+  for (size_t id = 0; id < n; ++id) {
+    if (rep[id] >= 0) continue;
+    rep[id] = static_cast<int>(id);
+    const Point3 c = mc.centers[id];
+    const int mark = static_cast<int>(id) + 1;
+    mc.cells[id]->info().visit = mark;
+    stack.assign(1, mc.cells[id]);
+    while (!stack.empty()) {
+      const Cell cell = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 4; ++i) {
+        const Cell nb = cell->neighbor(i);
+        if (nb->info().visit == mark || dt.is_infinite(nb)) continue;
+        Point3 x;
+        if (nb->info().id >= 0) {
+          x = mc.centers[nb->info().id];
+        } else {
+          const K::Point_3 p = CGAL::circumcenter(nb->vertex(0)->point(), nb->vertex(1)->point(),
+                                                  nb->vertex(2)->point(), nb->vertex(3)->point());
+          x = {p.x(), p.y(), p.z()};
+        }
+        if (!(norm(sub(x, c)) <= eps)) continue;  // also for the NaN centre of a flat cell
+        nb->info().visit = mark;
+        if (nb->info().id >= 0) rep[nb->info().id] = static_cast<int>(id);
+        stack.push_back(nb);
+      }
+    }
+  }
+  // The merged vertex takes the smallest of its members' positions: CGAL visits edges in an order
+  // that depends on memory addresses, so "the first member" would differ from run to run.
+  for (size_t id = 0; id < n; ++id) {
+    const int r = rep[id];
+    if (r != static_cast<int>(id) && mc.centers[id] < mc.centers[r]) {
+      mc.centers[r] = mc.centers[id];
+      mc.radii[r] = mc.radii[id];
+    }
+  }
+  std::vector<int> group_size(n, 0);
+  for (size_t id = 0; id < n; ++id) ++group_size[rep[id]];
+  // Rewrite faces: drop repeated corners, then faces left with fewer than three, then duplicates.
+  std::vector<int> start{0}, nodes;
+  std::vector<FaceKind> kind;
+  std::vector<std::array<int, 2>> dual;
+  std::set<std::vector<int>> seen;
+  std::vector<int> face, key_nodes;
+  for (size_t f = 0; f < mc.size(); ++f) {
+    face.clear();
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
+      const int node = mc.nodes[k] >= 0 ? rep[mc.nodes[k]] : mc.nodes[k];
+      if (face.empty() || face.back() != node) face.push_back(node);
+    }
+    while (face.size() > 1 && face.front() == face.back()) face.pop_back();
+    // A sphere's facets all shrink to its centre: keep the point.
+    if (face.size() == 1 && face[0] >= 0) mc.points.push_back(face[0]);
+    if (face.size() < 3) continue;
+    // Only faces with a corner in a merged group can repeat one or duplicate another face.
+    bool merged = false;
+    for (int k = mc.start[f]; k < mc.start[f + 1] && !merged; ++k)
+      merged = mc.nodes[k] >= 0 && group_size[rep[mc.nodes[k]]] > 1;
+    if (merged) {
+      key_nodes = face;
+      std::sort(key_nodes.begin(), key_nodes.end());
+      if (std::unique(key_nodes.begin(), key_nodes.end()) != key_nodes.end()) continue;
+      if (!seen.insert(key_nodes).second) continue;
+    }
+    nodes.insert(nodes.end(), face.begin(), face.end());
+    start.push_back(static_cast<int>(nodes.size()));
+    kind.push_back(mc.kind[f]);
+    dual.push_back(mc.dual[f]);
+  }
+  mc.dual = std::move(dual);
+  mc.start = std::move(start);
+  mc.nodes = std::move(nodes);
+  mc.kind = std::move(kind);
+}
+
+std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
+                                       const InsideTest& inside, MedialAxisStats& st) {
+  const size_t n = mc.cells.size();
+  std::vector<std::uint8_t> label(n, 0);
+  std::vector<int> unsure;
+  std::vector<char> used(n, 0);
+  for (int node : mc.nodes)
+    if (node >= 0) used[node] = 1;
+  for (int node : mc.points) used[node] = 1;
+  const auto [lo, hi] = bounding_box(samples.points);
+  const double diag = norm(sub(hi, lo));
+  for (size_t id = 0; id < n; ++id) {
+    if (!used[id]) continue;
+    const Point3& x = mc.centers[id];
+    bool beyond = mc.radii[id] > diag;
+    for (int k = 0; k < 3; ++k) beyond = beyond || x[k] < lo[k] || x[k] > hi[k];
+    if (beyond) continue;  // label 0
+    int in = 0, out = 0;
+    for (int j = 0; j < 4; ++j) {
+      const int v = vote(samples, mc.cells[id]->vertex(j)->info(), x);
+      in += v > 0;
+      out += v < 0;
+    }
+    // Inside needs two agreeing votes: a wrong "inside" leaves a vertex out in the open.
+    if (in >= 2 && out == 0)
+      label[id] = 1;
+    else if (out >= 1 && in == 0)
+      label[id] = 0;
+    else
+      unsure.push_back(static_cast<int>(id));
+  }
+  if (!unsure.empty()) {
+    // Then the reconstruction mesh; what it cannot settle goes to the exact B-rep classifier.
+    const ReconstructionSide mesh(samples, umbrellas);
+    std::vector<int> still;
+    for (int id : unsure) {
+      const int side = mesh.side(mc.centers[id]);
+      if (side < 0)
+        still.push_back(id);
+      else
+        label[id] = static_cast<std::uint8_t>(side);
+    }
+    unsure.swap(still);
+  }
+  if (!unsure.empty()) {
+    std::vector<Point3> pts;
+    pts.reserve(unsure.size());
+    for (int id : unsure) pts.push_back(mc.centers[id]);
+    const std::vector<std::uint8_t> exact = inside(pts);
+    for (size_t k = 0; k < unsure.size(); ++k) label[unsure[k]] = exact[k];
+    st.exact_inside_tests += unsure.size();
+  }
+  return label;
+}
+
+// Keeps faces whose Voronoi vertices are all inside, then the largest connected piece (the inner
+// medial axis of a connected solid is connected, homotopy equivalent to the solid) and any other
+// piece that reaches the boundary.
+MedialMesh extract_inner(const MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
+                         int solid_index, MedialAxisStats& st) {
+  std::vector<int> kept;
+  for (size_t f = 0; f < mc.size(); ++f) {
+    bool in = true;
+    for (int k = mc.start[f]; k < mc.start[f + 1] && in; ++k)
+      if (mc.nodes[k] >= 0 && !inside[mc.nodes[k]]) in = false;
+    if (in) kept.push_back(static_cast<int>(f));
+  }
+  // Union-find over faces sharing a node.
+  std::unordered_map<int, int> node_owner;
+  std::vector<int> parent(kept.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (size_t i = 0; i < kept.size(); ++i) {
+    const int f = kept[i];
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
+      auto [it, fresh] = node_owner.emplace(mc.nodes[k], static_cast<int>(i));
+      if (!fresh) parent[find_root(parent, static_cast<int>(i))] = find_root(parent, it->second);
+    }
+  }
+  // Pieces: faces, and faces that reach the boundary (completion triangles at convex edges and
+  // corners). A stray piece floats inside; a piece that reaches the boundary is medial axis that
+  // a too coarse sampling cut off from the rest (a neck thinner than the spacing): it is kept.
+  std::unordered_map<int, std::pair<int, int>> piece;  // root -> (faces, completion faces)
+  for (size_t i = 0; i < kept.size(); ++i) {
+    auto& p = piece[find_root(parent, static_cast<int>(i))];
+    ++p.first;
+    p.second += mc.kind[kept[i]] != FaceKind::Voronoi;
+  }
+  st.components = piece.size();
+  int best = -1, best_size = 0;
+  for (const auto& [root, p] : piece)
+    if (p.first > best_size || (p.first == best_size && root < best)) best = root, best_size = p.first;
+  std::set<int> keep{best};
+  for (const auto& [root, p] : piece)
+    if (p.second >= 8 && p.first >= best_size / 100) keep.insert(root);
+
+  MedialMesh mesh;
+  std::unordered_map<int, int> out_index;
+  std::vector<int> poly;
+  for (size_t i = 0; i < kept.size(); ++i) {
+    if (!keep.count(find_root(parent, static_cast<int>(i)))) continue;
+    const int f = kept[i];
+    poly.clear();
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
+      const int node = mc.nodes[k];
+      auto [it, fresh] = out_index.emplace(node, static_cast<int>(mesh.vertices.size()));
+      if (fresh) {
+        if (node >= 0) {
+          mesh.vertices.push_back(mc.centers[node]);
+          mesh.radius.push_back(mc.radii[node]);
+        } else {
+          mesh.vertices.push_back(samples.points[-node - 1]);
+          mesh.radius.push_back(0.0);  // a sample on the boundary: its medial ball has radius 0
+        }
+      }
+      poly.push_back(it->second);
+    }
+    mesh.add_face(poly, mc.kind[f], solid_index);
+  }
+  // A medial axis that is a point (a sphere's centre) has no faces: keep its vertex.
+  if (mesh.num_faces() == 0) {
+    for (int node : mc.points) {
+      if (!inside[node] || !out_index.emplace(node, static_cast<int>(mesh.vertices.size())).second) continue;
+      mesh.vertices.push_back(mc.centers[node]);
+      mesh.radius.push_back(mc.radii[node]);
+    }
+  }
+  st.dropped_faces = mc.size() - mesh.num_faces();
+  return mesh;
+}
+
+}  // namespace cadmedial::internal

@@ -1,0 +1,24 @@
+// Internal to medial/: the inner medial axis (4.2.5): coincident Voronoi vertices merged, each
+// labelled inside or outside the solid, and the faces inside kept.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "../sampling/samples.h"
+#include "delaunay_3.h"
+#include "medial_axis.h"
+#include "reconstruct_faces.h"
+
+namespace cadmedial::internal {
+
+/// Merges cells whose circumcentres lie within eps (cospherical samples).
+void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps);
+/// 1 inside, 0 outside, per cell id of mc.
+std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
+                                       const InsideTest& inside, MedialAxisStats& st);
+/// The faces whose Voronoi vertices are all inside, in the pieces kept, as a mesh.
+MedialMesh extract_inner(const MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
+                         int solid_index, MedialAxisStats& st);
+
+}  // namespace cadmedial::internal

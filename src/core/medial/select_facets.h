@@ -1,0 +1,39 @@
+// Internal to medial/: the Angle and Ratio conditions (section 3) and the Voronoi facets they
+// select (4.2.6 lines 5-8); MEDIAL's pole umbrellas for the ablation.
+#pragma once
+
+#include <vector>
+
+#include "../progress.h"
+#include "../sampling/samples.h"
+#include "../types.h"
+#include "delaunay_3.h"
+#include "medial_axis.h"
+#include "reconstruct_faces.h"
+
+namespace cadmedial::internal {
+
+/// Does Delaunay edge pq pass the Angle or the Ratio condition at p's umbrella?
+class Selection {
+ public:
+  Selection(const Samples& s, const Umbrellas& u, const MedialParams& params);
+  bool passes(int p, int q) const;
+  /// 4.2.6 line 6: either endpoint may pass.
+  bool selected(int p, int q) const { return passes(p, q) || passes(q, p); }
+
+ private:
+  const Samples& s_;
+  const Umbrellas& u_;
+  double sin_theta_, rho_;
+  std::vector<Point3> normals_;     ///< each sample's umbrella normals side by side (CSR of u_)
+  std::vector<double> max_radius_;  ///< each sample's largest umbrella circumradius
+};
+
+/// MEDIAL's umbrellas from the poles (section 3), for the ablation.
+Umbrellas umbrellas_from_poles(const Delaunay& dt, std::size_t n);
+
+/// The bounded Voronoi facets dual to selected Delaunay edges, added to mc.
+void select_facets(const Delaunay& dt, const Selection& sel, MedialComplex& mc, MedialAxisStats& st,
+                   const Progress& progress);
+
+}  // namespace cadmedial::internal
