@@ -11,14 +11,8 @@ from . import legend
 from .icons import icon_path
 
 
-class ViewProviderMedialAxis:
-    """Per-vertex colours come from the object's RadiusColors (App::PropertyColorList): the mesh
-    view provider uses them while its Coloring property is on."""
-
-    def __init__(self, vobj):
-        vobj.Proxy = self
-        vobj.Lighting = "Two side"  # the medial surface is open: both sides are seen
-        vobj.Coloring = True
+class _StatelessProxy:
+    """What both view providers share: nothing to save in the document, the object at hand."""
 
     def attach(self, vobj):
         self.Object = vobj.Object
@@ -30,6 +24,16 @@ class ViewProviderMedialAxis:
         return None
 
     dumps, loads = __getstate__, __setstate__
+
+
+class ViewProviderMedialAxis(_StatelessProxy):
+    """Per-vertex colours come from the object's RadiusColors (App::PropertyColorList): the mesh
+    view provider uses them while its Coloring property is on."""
+
+    def __init__(self, vobj):
+        vobj.Proxy = self
+        vobj.Lighting = "Two side"  # the medial surface is open: both sides are seen
+        vobj.Coloring = True
 
     def getIcon(self):
         return icon_path("MedialAxis_Create.svg")
@@ -68,24 +72,13 @@ class ViewProviderMedialAxis:
         return True
 
 
-class ViewProviderMedialShape:
+class ViewProviderMedialShape(_StatelessProxy):
     """The Part feature of planar faces: default Part display, our icon. Hidden at first: it
     lies exactly on the coloured mesh (Space shows it)."""
 
     def __init__(self, vobj):
         vobj.Proxy = self
         vobj.Visibility = False
-
-    def attach(self, vobj):
-        self.Object = vobj.Object
-
-    def __getstate__(self):
-        return None
-
-    def __setstate__(self, state):
-        return None
-
-    dumps, loads = __getstate__, __setstate__
 
     def getIcon(self):
         return icon_path("MedialAxis_MakeShape.svg")
