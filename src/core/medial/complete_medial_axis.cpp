@@ -3,16 +3,32 @@
 #include <array>
 #include <cmath>
 #include <set>
+#include <unordered_map>
 
 #include "geometry_3.h"
 
 namespace cadmedial::internal {
+
+namespace {
+
+// Records the Voronoi vertices of sample s (its incident cells) once.
+void record_star(const Delaunay& dt, const Vertex& v, int s, MedialComplex& mc, std::set<int>& recorded) {
+  if (!recorded.insert(s).second) return;
+  std::vector<Cell> cells;
+  dt.finite_incident_cells(v, std::back_inserter(cells));
+  mc.star_sample.push_back(s);
+  for (const Cell& c : cells) mc.star_cells.push_back(mc.cell_id(c));
+  mc.star_start.push_back(static_cast<int>(mc.star_cells.size()));
+}
+
+}  // namespace
 
 // 4.2.2 ProcConvexEdges: triangle s v1 v2 for the Voronoi edge dual to each triplet triangle,
 // and the fill triangles s s' v where v is a Voronoi vertex of s' too.
 void complete_convex_edges(const Delaunay& dt, const std::vector<Vertex>& handle, const Samples& samples,
                            MedialComplex& mc, MedialAxisStats& st) {
   std::set<std::array<int, 3>> fills;
+  std::set<int> recorded;
   for (const Triplet& t : samples.triplets) {
     Vertex vs = handle[t.s], vl = handle[t.sl], vr = handle[t.sr];
     if (vs == Vertex() || vl == Vertex() || vr == Vertex()) continue;
@@ -23,6 +39,7 @@ void complete_convex_edges(const Delaunay& dt, const std::vector<Vertex>& handle
     if (dt.is_infinite(c) || dt.is_infinite(n)) continue;
     const int v1 = mc.cell_id(c), v2 = mc.cell_id(n);
     mc.add({MedialComplex::sample_node(t.s), v1, v2}, FaceKind::Edge);
+    record_star(dt, vs, t.s, mc, recorded);
     ++st.edge_triangles;
     for (int nb : {t.prev, t.next}) {
       if (nb < 0 || handle[nb] == Vertex()) continue;
@@ -35,6 +52,7 @@ void complete_convex_edges(const Delaunay& dt, const std::vector<Vertex>& handle
         std::array<int, 3> key{std::min(t.s, nb), std::max(t.s, nb), mc.cell_id(cell)};
         if (!fills.insert(key).second) continue;
         mc.add({MedialComplex::sample_node(t.s), MedialComplex::sample_node(nb), mc.cell_id(cell)}, FaceKind::Edge);
+        record_star(dt, handle[nb], nb, mc, recorded);
         ++st.edge_triangles;
       }
     }
@@ -47,6 +65,7 @@ void complete_convex_edges(const Delaunay& dt, const std::vector<Vertex>& handle
 void complete_corners(const Delaunay& dt, const std::vector<Vertex>& handle, const Samples& samples,
                       const Selection& sel, MedialComplex& mc, MedialAxisStats& st) {
   std::vector<Delaunay::Facet> facets;
+  std::set<int> recorded(mc.star_sample.begin(), mc.star_sample.end());
   for (size_t p = 0; p < samples.size(); ++p) {
     if (samples.tag[p] != SampleTag::Corner || !samples.nonconcave[p] || handle[p] == Vertex()) continue;
     facets.clear();
@@ -62,9 +81,111 @@ void complete_corners(const Delaunay& dt, const std::vector<Vertex>& handle, con
       const Cell n = c->neighbor(i);
       if (dt.is_infinite(c) || dt.is_infinite(n)) continue;
       mc.add({MedialComplex::sample_node(static_cast<int>(p)), mc.cell_id(c), mc.cell_id(n)}, FaceKind::Corner);
+      record_star(dt, handle[p], static_cast<int>(p), mc, recorded);
       ++st.corner_triangles;
     }
   }
+}
+
+}  // namespace cadmedial::internal
+
+namespace cadmedial::internal {
+
+// The completion joins a sample s to Voronoi edges of its cell V_s: the triangles at s form a fan
+// whose rim (the link of s) should be one path, the edge of the medial sheet as seen from s. Where
+// the sheet's edge runs through further vertices of V_s between two joined Voronoi edges, the rim
+// breaks and every break closes a loop around s that the solid does not have. Each break is
+// bridged by the shortest path of axis edges between vertices of V_s, coned to s: the triangles
+// lie in the convex cell V_s, so they cross nothing.
+std::vector<int> fan_completions(MedialComplex& mc, const std::vector<int>& faces,
+                                 const std::vector<std::uint8_t>& inside, MedialAxisStats& st) {
+  std::unordered_map<int, std::vector<int>> at_sample;  // sample node -> completion faces
+  std::unordered_map<int, std::vector<int>> at_cell;    // cell -> selected Voronoi faces
+  for (int f : faces) {
+    const bool completion = mc.kind[f] != FaceKind::Voronoi;
+    if (!completion && mc.filler[f]) continue;
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
+      const int node = mc.nodes[k];
+      if (node < 0 && completion) at_sample[node].push_back(f);
+      if (node >= 0 && !completion) at_cell[node].push_back(f);
+    }
+  }
+  std::vector<int> added;
+  std::unordered_map<int, int> parent;  // union-find over rim nodes
+  auto root = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::unordered_map<int, std::vector<std::pair<int, bool>>> adj;  // node -> (node, rim edge)
+  for (size_t i = 0; i < mc.star_sample.size(); ++i) {
+    const int s = MedialComplex::sample_node(mc.star_sample[i]);
+    const auto fs = at_sample.find(s);
+    if (fs == at_sample.end()) continue;
+    parent.clear();
+    adj.clear();
+    for (int f : fs->second) {
+      int ends[2], k2 = 0;
+      for (int k = mc.start[f]; k < mc.start[f + 1]; ++k)
+        if (mc.nodes[k] != s && k2 < 2) ends[k2++] = mc.nodes[k];
+      if (k2 != 2) continue;
+      for (int x : ends) parent.emplace(x, x);
+      parent[root(ends[0])] = root(ends[1]);
+      adj[ends[0]].push_back({ends[1], true});
+      adj[ends[1]].push_back({ends[0], true});
+    }
+    std::set<int> star;
+    for (int k = mc.star_start[i]; k < mc.star_start[i + 1]; ++k)
+      if (inside[mc.star_cells[k]]) star.insert(mc.star_cells[k]);
+    for (int a : star) {
+      const auto fa = at_cell.find(a);
+      if (fa == at_cell.end()) continue;
+      for (int f : fa->second)
+        for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
+          const int next = k + 1 < mc.start[f + 1] ? mc.nodes[k + 1] : mc.nodes[mc.start[f]];
+          if (mc.nodes[k] == a && next != a && star.count(next)) {
+            adj[a].push_back({next, false});
+            adj[next].push_back({a, false});
+          }
+        }
+    }
+    // Join the rim's pieces one at a time along shortest paths.
+    for (;;) {
+      std::set<int> roots;
+      for (auto& [x, p] : parent) roots.insert(root(x));
+      if (roots.size() < 2) break;
+      const int from = *roots.begin();
+      std::unordered_map<int, int> came;
+      std::vector<int> queue;
+      for (auto& [x, p] : parent)
+        if (root(x) == from) queue.push_back(x), came[x] = x;
+      int hit = -1;
+      for (size_t h = 0; h < queue.size() && hit < 0; ++h)
+        for (const auto& [y, rim] : adj[queue[h]]) {
+          if (came.count(y)) continue;
+          came[y] = queue[h];
+          if (parent.count(y) && root(y) != from) {
+            hit = y;
+            break;
+          }
+          queue.push_back(y);
+        }
+      if (hit < 0) break;  // no path of axis edges inside V_s: leave the break
+      for (int y = hit; came[y] != y; y = came[y]) {
+        const int x = came[y];
+        bool rim = false;
+        for (const auto& [z, r] : adj[x]) rim = rim || (z == y && r);
+        if (!rim) {
+          added.push_back(static_cast<int>(mc.size()));
+          mc.add({s, x, y}, FaceKind::Edge);
+          ++st.fan_triangles;
+        }
+        parent.emplace(x, x);
+        parent.emplace(y, y);
+        parent[root(x)] = root(y);
+      }
+    }
+  }
+  return added;
 }
 
 }  // namespace cadmedial::internal

@@ -44,6 +44,14 @@ struct MedialComplex {
   std::vector<FaceKind> kind;
   std::vector<int> points;       ///< cells where a selected facet collapsed to a single point
   std::vector<std::array<int, 2>> dual;  ///< per face: the Delaunay edge pq of a Voronoi facet, else -1
+  /// per face: 1 for a Voronoi facet that no condition selected, kept only where the axis's
+  /// topology needs it (collapse_fillers)
+  std::vector<std::uint8_t> filler;
+  /// The Voronoi vertices of each sample that completion faces join to the axis (cells incident
+  /// to it, by id), for fan_completions.
+  std::vector<int> star_sample;
+  std::vector<int> star_start{0};
+  std::vector<int> star_cells;
 
   int cell_id(const Cell& c) {
     if (c->info().id < 0) {
@@ -57,8 +65,9 @@ struct MedialComplex {
     return c->info().id;
   }
   static int sample_node(int s) { return -(s + 1); }
-  void add(const std::vector<int>& face_nodes, FaceKind k, std::array<int, 2> pq = {-1, -1}) {
+  void add(const std::vector<int>& face_nodes, FaceKind k, std::array<int, 2> pq = {-1, -1}, bool is_filler = false) {
     dual.push_back(pq);
+    filler.push_back(is_filler);
     nodes.insert(nodes.end(), face_nodes.begin(), face_nodes.end());
     start.push_back(static_cast<int>(nodes.size()));
     kind.push_back(k);

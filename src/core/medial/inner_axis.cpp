@@ -7,9 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <map>
 #include <set>
 #include <unordered_map>
 
+#include "collapse_fillers.h"
+#include "complete_medial_axis.h"
 #include "geometry_3.h"
 
 namespace cadmedial::internal {
@@ -152,13 +155,15 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
       mc.radii[r] = mc.radii[id];
     }
   }
+  for (int& c : mc.star_cells) c = rep[c];
   std::vector<int> group_size(n, 0);
   for (size_t id = 0; id < n; ++id) ++group_size[rep[id]];
   // Rewrite faces: drop repeated corners, then faces left with fewer than three, then duplicates.
   std::vector<int> start{0}, nodes;
   std::vector<FaceKind> kind;
   std::vector<std::array<int, 2>> dual;
-  std::set<std::vector<int>> seen;
+  std::vector<std::uint8_t> filler;
+  std::map<std::vector<int>, int> seen;  // sorted corners -> face
   std::vector<int> face, key_nodes;
   for (size_t f = 0; f < mc.size(); ++f) {
     face.clear();
@@ -178,14 +183,21 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
       key_nodes = face;
       std::sort(key_nodes.begin(), key_nodes.end());
       if (std::unique(key_nodes.begin(), key_nodes.end()) != key_nodes.end()) continue;
-      if (!seen.insert(key_nodes).second) continue;
+      const auto [it, fresh] = seen.emplace(key_nodes, static_cast<int>(kind.size()));
+      if (!fresh) {
+        // One face: it is part of the axis proper if any of its copies is.
+        filler[it->second] = filler[it->second] && mc.filler[f];
+        continue;
+      }
     }
     nodes.insert(nodes.end(), face.begin(), face.end());
     start.push_back(static_cast<int>(nodes.size()));
     kind.push_back(mc.kind[f]);
     dual.push_back(mc.dual[f]);
+    filler.push_back(mc.filler[f]);
   }
   mc.dual = std::move(dual);
+  mc.filler = std::move(filler);
   mc.start = std::move(start);
   mc.nodes = std::move(nodes);
   mc.kind = std::move(kind);
@@ -196,10 +208,14 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
   const size_t n = mc.cells.size();
   std::vector<std::uint8_t> label(n, 0);
   std::vector<int> unsure;
+  // 2: a corner of the axis proper; 1: of filler faces only, whose doubtful corners are called
+  // outside without asking the B-rep (they lie within the sampling's sag of the surface, where
+  // the Voronoi complex meets the boundary anyway).
   std::vector<char> used(n, 0);
-  for (int node : mc.nodes)
-    if (node >= 0) used[node] = 1;
-  for (int node : mc.points) used[node] = 1;
+  for (size_t f = 0; f < mc.size(); ++f)
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k)
+      if (mc.nodes[k] >= 0) used[mc.nodes[k]] = std::max<char>(used[mc.nodes[k]], mc.filler[f] ? 1 : 2);
+  for (int node : mc.points) used[node] = 2;
   const auto [lo, hi] = bounding_box(samples.points);
   const double diag = norm(sub(hi, lo));
   for (size_t id = 0; id < n; ++id) {
@@ -228,10 +244,10 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
     std::vector<int> still;
     for (int id : unsure) {
       const int side = mesh.side(mc.centers[id]);
-      if (side < 0)
-        still.push_back(id);
-      else
+      if (side >= 0)
         label[id] = static_cast<std::uint8_t>(side);
+      else if (used[id] == 2)
+        still.push_back(id);
     }
     unsure.swap(still);
   }
@@ -249,7 +265,7 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
 // Keeps faces whose Voronoi vertices are all inside, then the largest connected piece (the inner
 // medial axis of a connected solid is connected, homotopy equivalent to the solid) and any other
 // piece that reaches the boundary.
-MedialMesh extract_inner(const MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
+MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
                          int solid_index, MedialAxisStats& st) {
   std::vector<int> kept;
   for (size_t f = 0; f < mc.size(); ++f) {
@@ -258,6 +274,9 @@ MedialMesh extract_inner(const MedialComplex& mc, const std::vector<std::uint8_t
       if (mc.nodes[k] >= 0 && !inside[mc.nodes[k]]) in = false;
     if (in) kept.push_back(static_cast<int>(f));
   }
+  const std::vector<int> fans = fan_completions(mc, kept, inside, st);
+  kept.insert(kept.end(), fans.begin(), fans.end());
+  kept = collapse_fillers(mc, kept, st);
   // Union-find over faces sharing a node.
   std::unordered_map<int, int> node_owner;
   std::vector<int> parent(kept.size());
@@ -288,10 +307,11 @@ MedialMesh extract_inner(const MedialComplex& mc, const std::vector<std::uint8_t
 
   MedialMesh mesh;
   std::unordered_map<int, int> out_index;
-  std::vector<int> poly;
+  std::vector<int> poly, out_faces;
   for (size_t i = 0; i < kept.size(); ++i) {
     if (!keep.count(find_root(parent, static_cast<int>(i)))) continue;
     const int f = kept[i];
+    out_faces.push_back(f);
     poly.clear();
     for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
       const int node = mc.nodes[k];
@@ -317,7 +337,11 @@ MedialMesh extract_inner(const MedialComplex& mc, const std::vector<std::uint8_t
       mesh.radius.push_back(mc.radii[node]);
     }
   }
-  st.dropped_faces = mc.size() - mesh.num_faces();
+  st.dropped_faces = 0;
+  for (size_t f = 0; f < mc.size(); ++f) st.dropped_faces += !mc.filler[f];
+  st.filler_faces = 0;
+  for (int f : out_faces) st.dropped_faces -= !mc.filler[f], st.filler_faces += mc.filler[f];
+  st.euler_characteristic = mesh.num_faces() > 0 ? euler_characteristic(mc, out_faces) : mesh.num_vertices();
   return mesh;
 }
 

@@ -18,7 +18,7 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps);
 std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
                                        const InsideTest& inside, MedialAxisStats& st);
 /// The faces whose Voronoi vertices are all inside, in the pieces kept, as a mesh.
-MedialMesh extract_inner(const MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
+MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
                          int solid_index, MedialAxisStats& st);
 
 }  // namespace cadmedial::internal

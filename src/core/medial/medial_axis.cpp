@@ -61,7 +61,7 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   const Umbrellas pole_umbrellas = params.plain_medial ? umbrellas_from_poles(dt, samples.size()) : Umbrellas();
   const Selection sel(samples, params.plain_medial ? pole_umbrellas : umbrellas, params);
   MedialComplex mc;
-  select_facets(dt, sel, mc, st, progress);
+  select_facets(dt, sel, mc, st, progress, !params.plain_medial);
   st.timings.push_back({"selection", seconds_since(t0)});
 
   t0 = Clock::now();

@@ -23,9 +23,13 @@ struct MedialAxisStats {
   std::size_t selected_facets = 0;   ///< Voronoi facets passing Angle or Ratio (before separation)
   std::size_t edge_triangles = 0;
   std::size_t corner_triangles = 0;
+  std::size_t fan_triangles = 0;     ///< cones closing breaks in a completed sample's rim
   std::size_t exact_inside_tests = 0;
   std::size_t dropped_faces = 0;     ///< outside the solid, unbounded, or in stray pieces
   std::size_t components = 0;        ///< pieces of the inner axis before stray ones are dropped
+  std::size_t filler_faces = 0;      ///< unselected Voronoi facets kept for the topology
+  std::size_t bare_edges = 0;        ///< 1-D parts of the repaired complex that no face carries
+  long euler_characteristic = 0;     ///< V - E + F of the output faces
 };
 
 /// The inner medial axis of one solid from its samples and umbrellas. Faces get `solid_index`.

@@ -139,17 +139,20 @@ bool Selection::passes(int p, int q) const {
 }
 
 // 4.2.6 lines 5-8: the bounded Voronoi facets dual to selected Delaunay edges. Unbounded facets
-// belong to the outer medial axis (4.2.5) and are not kept.
+// belong to the outer medial axis (4.2.5) and are not kept. With `fillers`, the bounded facets of
+// the other edges are added too, marked: the Voronoi complex inside the solid has the solid's
+// homotopy type, and collapse_fillers keeps the few of them the selected axis needs for it.
 void select_facets(const Delaunay& dt, const Selection& sel, MedialComplex& mc, MedialAxisStats& st,
-                   const Progress& progress) {
+                   const Progress& progress, bool fillers) {
   std::vector<int> face;
   size_t count = 0;
   const size_t total = 7 * dt.number_of_vertices();  // about; counting the edges is a full pass
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e, ++count) {
     if (count % 65536 == 0) report(progress, "selection", static_cast<double>(count) / std::max<size_t>(1, total));
     const int p = e->first->vertex(e->second)->info(), q = e->first->vertex(e->third)->info();
-    if (!sel.selected(p, q)) continue;
-    ++st.selected_facets;
+    const bool selected = sel.selected(p, q);
+    if (!selected && !fillers) continue;
+    st.selected_facets += selected;
     face.clear();
     bool bounded = true;
     auto cc = dt.incident_cells(*e), done = cc;
@@ -160,7 +163,7 @@ void select_facets(const Delaunay& dt, const Selection& sel, MedialComplex& mc, 
       }
       face.push_back(mc.cell_id(cc));
     } while (++cc != done);
-    if (bounded && face.size() >= 3) mc.add(face, FaceKind::Voronoi, {p, q});
+    if (bounded && face.size() >= 3) mc.add(face, FaceKind::Voronoi, {p, q}, !selected);
   }
 }
 

@@ -32,8 +32,9 @@ class Selection {
 /// MEDIAL's umbrellas from the poles (section 3), for the ablation.
 Umbrellas umbrellas_from_poles(const Delaunay& dt, std::size_t n);
 
-/// The bounded Voronoi facets dual to selected Delaunay edges, added to mc.
+/// The bounded Voronoi facets dual to selected Delaunay edges, added to mc; with `fillers`, those
+/// of the other edges too, marked as fillers.
 void select_facets(const Delaunay& dt, const Selection& sel, MedialComplex& mc, MedialAxisStats& st,
-                   const Progress& progress);
+                   const Progress& progress, bool fillers);
 
 }  // namespace cadmedial::internal

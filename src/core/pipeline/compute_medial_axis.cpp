@@ -224,6 +224,9 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       ss.faces = mesh.num_faces();
       ss.dropped_faces = ms.dropped_faces;
       ss.components = ms.components;
+      ss.filler_faces = ms.filler_faces;
+      ss.bare_edges = ms.bare_edges;
+      ss.euler_characteristic = ms.euler_characteristic;
       ss.exact_inside_tests = ms.exact_inside_tests;
       stats.samples += ss.samples;
       stats.solids.push_back(ss);

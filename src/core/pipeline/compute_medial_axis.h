@@ -23,6 +23,9 @@ struct SolidStats {
   std::size_t nonconcave_corners = 0;
   std::size_t dropped_faces = 0;   ///< selected faces outside the solid or in stray pieces
   std::size_t components = 0;      ///< pieces of the inner axis before stray ones were dropped
+  std::size_t filler_faces = 0;    ///< unselected Voronoi facets kept for the axis's topology
+  std::size_t bare_edges = 0;      ///< 1-D parts of the axis that no output face carries
+  long euler_characteristic = 0;   ///< V - E + F of the output; the solid's when the topology is right
   std::size_t exact_inside_tests = 0;  ///< Voronoi vertices the B-rep classifier had to settle
 };
 

@@ -68,6 +68,9 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"nonconcave_corners\": " + std::to_string(s.nonconcave_corners);
     j += ", \"dropped_faces\": " + std::to_string(s.dropped_faces);
     j += ", \"components\": " + std::to_string(s.components);
+    j += ", \"filler_faces\": " + std::to_string(s.filler_faces);
+    j += ", \"bare_edges\": " + std::to_string(s.bare_edges);
+    j += ", \"euler_characteristic\": " + std::to_string(s.euler_characteristic);
     j += ", \"exact_inside_tests\": " + std::to_string(s.exact_inside_tests);
     j += "}";
   }

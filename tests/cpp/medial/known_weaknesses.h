@@ -17,9 +17,7 @@ inline bool known_weakness(const std::string& test, const std::string& name) {
       // Voronoi facets"). Needs a topology-preserving clean-up of the fins.
       {"Euler", "Cylinder"},
       {"Euler", "Torus"},
-      {"Euler", "FreecadFilletBox"},
       {"Euler", "FreecadYRodMount"},
-      {"Euler", "CaxifSg1"},
       {"Euler", "NistFtc11"},
       // One small hole (9 boundary edges) and a broken edge loop near a corner at h = 0.25.
       {"Euler", "RandomPolytope3"},
