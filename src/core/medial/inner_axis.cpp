@@ -7,11 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <unordered_map>
 
-#include "collapse_fillers.h"
+#include "preserve_topology.h"
 #include "complete_medial_axis.h"
 #include "geometry_3.h"
 
@@ -246,7 +247,7 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
       const int side = mesh.side(mc.centers[id]);
       if (side >= 0)
         label[id] = static_cast<std::uint8_t>(side);
-      else if (used[id] == 2)
+      else if (used[id] == 2 || getenv("CM_ALL_EXACT"))
         still.push_back(id);
     }
     unsure.swap(still);
@@ -274,9 +275,13 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
       if (mc.nodes[k] >= 0 && !inside[mc.nodes[k]]) in = false;
     if (in) kept.push_back(static_cast<int>(f));
   }
+  // The Voronoi part first, its topology repaired; then the completion triangles that keep it,
+  // the paper's before the fans that close their rims.
   const std::vector<int> fans = fan_completions(mc, kept, inside, st);
-  kept.insert(kept.end(), fans.begin(), fans.end());
-  kept = collapse_fillers(mc, kept, st);
+  std::vector<int> voronoi, completion;
+  for (int f : kept) (mc.kind[f] == FaceKind::Voronoi ? voronoi : completion).push_back(f);
+  completion.insert(completion.end(), fans.begin(), fans.end());
+  kept = attach_by_expansion(mc, collapse_fillers(mc, voronoi, st), completion, st);
   // Union-find over faces sharing a node.
   std::unordered_map<int, int> node_owner;
   std::vector<int> parent(kept.size());

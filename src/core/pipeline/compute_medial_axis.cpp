@@ -226,6 +226,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       ss.components = ms.components;
       ss.filler_faces = ms.filler_faces;
       ss.bare_edges = ms.bare_edges;
+      ss.unattached_faces = ms.unattached_faces;
       ss.euler_characteristic = ms.euler_characteristic;
       ss.exact_inside_tests = ms.exact_inside_tests;
       stats.samples += ss.samples;

@@ -25,6 +25,7 @@ struct SolidStats {
   std::size_t components = 0;      ///< pieces of the inner axis before stray ones were dropped
   std::size_t filler_faces = 0;    ///< unselected Voronoi facets kept for the axis's topology
   std::size_t bare_edges = 0;      ///< 1-D parts of the axis that no output face carries
+  std::size_t unattached_faces = 0;  ///< completion triangles left out because they would close a loop
   long euler_characteristic = 0;   ///< V - E + F of the output; the solid's when the topology is right
   std::size_t exact_inside_tests = 0;  ///< Voronoi vertices the B-rep classifier had to settle
 };

@@ -70,6 +70,7 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"components\": " + std::to_string(s.components);
     j += ", \"filler_faces\": " + std::to_string(s.filler_faces);
     j += ", \"bare_edges\": " + std::to_string(s.bare_edges);
+    j += ", \"unattached_faces\": " + std::to_string(s.unattached_faces);
     j += ", \"euler_characteristic\": " + std::to_string(s.euler_characteristic);
     j += ", \"exact_inside_tests\": " + std::to_string(s.exact_inside_tests);
     j += "}";

@@ -1,7 +1,9 @@
-#include "collapse_fillers.h"
+#include "preserve_topology.h"
 
 #include <algorithm>
 #include <array>
+#include <unordered_map>
+#include <unordered_set>
 #include <cstdint>
 
 namespace cadmedial::internal {
@@ -141,6 +143,62 @@ std::vector<int> collapse_fillers(const MedialComplex& mc, const std::vector<int
   for (size_t i = 0; i < faces.size(); ++i)
     if (alive[i]) kept.push_back(faces[i]);
   st.bare_edges = essential_bare_edges(g, count, removed);
+  return kept;
+}
+
+std::vector<int> attach_by_expansion(const MedialComplex& mc, const std::vector<int>& base,
+                                     const std::vector<int>& candidates, MedialAxisStats& st) {
+  std::unordered_set<int> corners;
+  std::unordered_set<std::uint64_t> edges;
+  auto add_face = [&](int f) {
+    const int b = mc.start[f], e = mc.start[f + 1];
+    for (int k = b; k < e; ++k) {
+      corners.insert(mc.nodes[k]);
+      edges.insert(edge_key(mc.nodes[k], mc.nodes[k + 1 < e ? k + 1 : b]));
+    }
+  };
+  for (int f : base) add_face(f);
+  // A triangle keeps the homotopy type when what it shares with the complex is contractible: one
+  // corner, one edge, or two edges. Two corners without their edge would close a loop; all three
+  // edges would close a void or fill a loop the Voronoi part does not have.
+  auto attaches = [&](int f) {
+    const int b = mc.start[f], e = mc.start[f + 1];
+    if (e - b != 3) return false;
+    int shared_corners = 0, shared_edges = 0;
+    for (int k = b; k < e; ++k) {
+      shared_corners += corners.count(mc.nodes[k]) > 0;
+      shared_edges += edges.count(edge_key(mc.nodes[k], mc.nodes[k + 1 < e ? k + 1 : b])) > 0;
+    }
+    return (shared_corners == 1 && shared_edges == 0) || (shared_corners == 2 && shared_edges == 1) ||
+           (shared_corners == 3 && shared_edges == 2);
+  };
+  std::vector<int> kept = base;
+  // Whether a face attaches changes only when a face at one of its corners is added: faces that
+  // do not attach yet wait at their corners.
+  std::unordered_map<int, std::vector<int>> waiting;
+  std::vector<char> done(candidates.size(), 0);
+  std::vector<int> queue(candidates.size());
+  for (size_t i = 0; i < candidates.size(); ++i) queue[i] = static_cast<int>(i);
+  for (size_t head = 0; head < queue.size(); ++head) {
+    const int i = queue[head];
+    if (done[i]) continue;
+    const int f = candidates[i];
+    if (!attaches(f)) {
+      for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) waiting[mc.nodes[k]].push_back(i);
+      continue;
+    }
+    done[i] = 1;
+    add_face(f);
+    kept.push_back(f);
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
+      auto it = waiting.find(mc.nodes[k]);
+      if (it == waiting.end()) continue;
+      for (int j : it->second)
+        if (!done[j]) queue.push_back(j);
+      waiting.erase(it);
+    }
+  }
+  for (char d : done) st.unattached_faces += !d;
   return kept;
 }
 
