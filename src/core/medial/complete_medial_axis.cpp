@@ -3,8 +3,6 @@
 #include <array>
 #include <cmath>
 #include <set>
-#include <cstdio>
-#include <cstdlib>
 #include <unordered_map>
 
 #include "geometry_3.h"
@@ -171,10 +169,7 @@ std::vector<int> fan_completions(MedialComplex& mc, const std::vector<int>& face
           }
           queue.push_back(y);
         }
-      if (hit < 0) {  // no path of axis edges inside V_s: leave the break
-        if (getenv("CM_DEBUG")) fprintf(stderr, "DEBUG unbridged rim at sample %d: %zu pieces, star %zu inside cells\n", mc.star_sample[i], roots.size(), star.size());
-        break;
-      }
+      if (hit < 0) break;  // no path of axis edges inside V_s: leave the break
       for (int y = hit; came[y] != y; y = came[y]) {
         const int x = came[y];
         bool rim = false;

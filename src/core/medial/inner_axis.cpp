@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <cstdlib>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -222,8 +221,10 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
   for (size_t id = 0; id < n; ++id) {
     if (!used[id]) continue;
     const Point3& x = mc.centers[id];
-    bool beyond = mc.radii[id] > diag;
-    for (int k = 0; k < 3; ++k) beyond = beyond || x[k] < lo[k] || x[k] > hi[k];
+    // Written so that a NaN centre (a flat cell) is beyond too: GMP aborts on NaN in CGAL's
+    // exact fallback.
+    bool beyond = !(mc.radii[id] <= diag);
+    for (int k = 0; k < 3; ++k) beyond = beyond || !(x[k] >= lo[k] && x[k] <= hi[k]);
     if (beyond) continue;  // label 0
     int in = 0, out = 0;
     for (int j = 0; j < 4; ++j) {
@@ -247,7 +248,7 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
       const int side = mesh.side(mc.centers[id]);
       if (side >= 0)
         label[id] = static_cast<std::uint8_t>(side);
-      else if (used[id] == 2 || getenv("CM_ALL_EXACT"))
+      else if (used[id] == 2)
         still.push_back(id);
     }
     unsure.swap(still);

@@ -1,7 +1,6 @@
 #include "medial_axis.h"
 
 #include <chrono>
-#include <cstdlib>
 #include <numeric>
 
 #include "../errors.h"
@@ -76,7 +75,7 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   t0 = Clock::now();
   {
     const auto [lo, hi] = bounding_box(samples.points);
-    merge_coincident_cells(dt, mc, getenv("CM_NOMERGE") ? -1.0 : 1e-9 * norm(sub(hi, lo)));
+    merge_coincident_cells(dt, mc, 1e-9 * norm(sub(hi, lo)));
   }
   const std::vector<std::uint8_t> in = label_inside(mc, samples, umbrellas, inside, st);
   MedialMesh mesh = extract_inner(mc, in, samples, solid_index, st);
