@@ -33,6 +33,8 @@ void MedialMesh::append(const MedialMesh& other) {
   for (int v : other.face_vertices) face_vertices.push_back(v + offset);
   kind.insert(kind.end(), other.kind.begin(), other.kind.end());
   solid.insert(solid.end(), other.solid.begin(), other.solid.end());
+  for (const auto& e : other.edges) edges.push_back({e[0] + offset, e[1] + offset});
+  edge_solid.insert(edge_solid.end(), other.edge_solid.begin(), other.edge_solid.end());
 }
 
 }  // namespace cadmedial

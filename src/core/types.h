@@ -29,9 +29,15 @@ struct MedialMesh {
   std::vector<int> face_vertices;  ///< vertex indices of all polygons, counter-clockwise is not implied
   std::vector<FaceKind> kind;      ///< #F
   std::vector<int> solid;          ///< #F index of the input solid the face belongs to
+  /// #E segments of the axis that no face carries: where the medial axis is a curve (a torus's
+  /// core circle) the Voronoi facets around it can degenerate, and a Voronoi edge is all that
+  /// joins two parts. Vertex index pairs.
+  std::vector<std::array<int, 2>> edges;
+  std::vector<int> edge_solid;     ///< #E index of the input solid the edge belongs to
 
   std::size_t num_vertices() const { return vertices.size(); }
   std::size_t num_faces() const { return kind.size(); }
+  std::size_t num_edges() const { return edges.size(); }
   int face_size(std::size_t f) const { return face_start[f + 1] - face_start[f]; }
   const int* face(std::size_t f) const { return face_vertices.data() + face_start[f]; }
 

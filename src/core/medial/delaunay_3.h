@@ -52,6 +52,10 @@ struct MedialComplex {
   std::vector<int> star_sample;
   std::vector<int> star_start{0};
   std::vector<int> star_cells;
+  /// After merge_coincident_cells: the id each cell id was merged into, and the Voronoi facets
+  /// that merged into a segment (corners, filler flag).
+  std::vector<int> rep;
+  std::vector<std::array<int, 3>> segments;
 
   int cell_id(const Cell& c) {
     if (c->info().id < 0) {

@@ -5,6 +5,7 @@
 #include <CGAL/AABB_triangle_primitive.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <map>
@@ -174,6 +175,11 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
     while (face.size() > 1 && face.front() == face.back()) face.pop_back();
     // A sphere's facets all shrink to its centre: keep the point.
     if (face.size() == 1 && face[0] >= 0) mc.points.push_back(face[0]);
+    // A Voronoi facet whose corners merged into two is a segment now: where the axis is a curve,
+    // cospherical samples (a circle of edge samples around it) make these, and they may be all
+    // that joins the axis across that circle.
+    if (face.size() == 2 && face[0] >= 0 && face[1] >= 0 && mc.kind[f] == FaceKind::Voronoi)
+      mc.segments.push_back({std::min(face[0], face[1]), std::max(face[0], face[1]), mc.filler[f]});
     if (face.size() < 3) continue;
     // Only faces with a corner in a merged group can repeat one or duplicate another face.
     bool merged = false;
@@ -198,6 +204,17 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
   }
   mc.dual = std::move(dual);
   mc.filler = std::move(filler);
+  mc.rep = std::move(rep);
+  // One segment per pair, selected if any of its facets was.
+  std::sort(mc.segments.begin(), mc.segments.end());
+  std::vector<std::array<int, 3>> unique_segments;
+  for (const auto& sg : mc.segments) {
+    if (!unique_segments.empty() && unique_segments.back()[0] == sg[0] && unique_segments.back()[1] == sg[1])
+      unique_segments.back()[2] = unique_segments.back()[2] && sg[2];
+    else
+      unique_segments.push_back(sg);
+  }
+  mc.segments = std::move(unique_segments);
   mc.start = std::move(start);
   mc.nodes = std::move(nodes);
   mc.kind = std::move(kind);
@@ -216,6 +233,8 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
     for (int k = mc.start[f]; k < mc.start[f + 1]; ++k)
       if (mc.nodes[k] >= 0) used[mc.nodes[k]] = std::max<char>(used[mc.nodes[k]], mc.filler[f] ? 1 : 2);
   for (int node : mc.points) used[node] = 2;
+  for (const auto& sg : mc.segments)
+    for (int k = 0; k < 2; ++k) used[sg[k]] = std::max<char>(used[sg[k]], sg[2] ? 1 : 2);
   const auto [lo, hi] = bounding_box(samples.points);
   const double diag = norm(sub(hi, lo));
   for (size_t id = 0; id < n; ++id) {
@@ -264,44 +283,56 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
   return label;
 }
 
-// Keeps faces whose Voronoi vertices are all inside, then the largest connected piece (the inner
-// medial axis of a connected solid is connected, homotopy equivalent to the solid) and any other
-// piece that reaches the boundary.
+// Keeps faces whose Voronoi vertices are all inside, repairs the topology, then keeps the
+// largest connected piece (the inner medial axis of a connected solid is connected, homotopy
+// equivalent to the solid) and any other piece that reaches the boundary.
 MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
                          int solid_index, MedialAxisStats& st) {
-  std::vector<int> kept;
+  std::vector<int> inner;
   for (size_t f = 0; f < mc.size(); ++f) {
     bool in = true;
     for (int k = mc.start[f]; k < mc.start[f + 1] && in; ++k)
       if (mc.nodes[k] >= 0 && !inside[mc.nodes[k]]) in = false;
-    if (in) kept.push_back(static_cast<int>(f));
+    if (in) inner.push_back(static_cast<int>(f));
   }
   // The Voronoi part first, its topology repaired; then the completion triangles that keep it,
   // the paper's before the fans that close their rims.
-  const std::vector<int> fans = fan_completions(mc, kept, inside, st);
+  const std::vector<int> fans = fan_completions(mc, inner, inside, st);
   std::vector<int> voronoi, completion;
-  for (int f : kept) (mc.kind[f] == FaceKind::Voronoi ? voronoi : completion).push_back(f);
+  for (int f : inner) (mc.kind[f] == FaceKind::Voronoi ? voronoi : completion).push_back(f);
   completion.insert(completion.end(), fans.begin(), fans.end());
-  kept = attach_by_expansion(mc, collapse_fillers(mc, voronoi, st), completion, st);
-  // Union-find over faces sharing a node.
+  std::vector<std::array<int, 3>> segments;
+  for (const auto& sg : mc.segments)
+    if (inside[sg[0]] && inside[sg[1]]) segments.push_back(sg);
+  const AxisCells cells = attach_by_expansion(mc, collapse_fillers(mc, voronoi, segments, st), completion, st);
+
+  // Pieces: union-find over faces and edges (items) sharing a corner. A stray piece floats
+  // inside; a piece that reaches the boundary (8 or more completion triangles at convex edges and
+  // corners) is medial axis that a too coarse sampling cut off from the rest (a neck thinner than
+  // the spacing): it is kept.
+  const size_t nf = cells.faces.size(), items = nf + cells.edges.size();
+  auto corners_of = [&](size_t i, std::vector<int>& out) {
+    out.clear();
+    if (i < nf)
+      out.assign(mc.nodes.begin() + mc.start[cells.faces[i]], mc.nodes.begin() + mc.start[cells.faces[i] + 1]);
+    else
+      out.assign(cells.edges[i - nf].begin(), cells.edges[i - nf].end());
+  };
   std::unordered_map<int, int> node_owner;
-  std::vector<int> parent(kept.size());
+  std::vector<int> parent(items), corners;
   std::iota(parent.begin(), parent.end(), 0);
-  for (size_t i = 0; i < kept.size(); ++i) {
-    const int f = kept[i];
-    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
-      auto [it, fresh] = node_owner.emplace(mc.nodes[k], static_cast<int>(i));
+  for (size_t i = 0; i < items; ++i) {
+    corners_of(i, corners);
+    for (int node : corners) {
+      auto [it, fresh] = node_owner.emplace(node, static_cast<int>(i));
       if (!fresh) parent[find_root(parent, static_cast<int>(i))] = find_root(parent, it->second);
     }
   }
-  // Pieces: faces, and faces that reach the boundary (completion triangles at convex edges and
-  // corners). A stray piece floats inside; a piece that reaches the boundary is medial axis that
-  // a too coarse sampling cut off from the rest (a neck thinner than the spacing): it is kept.
-  std::unordered_map<int, std::pair<int, int>> piece;  // root -> (faces, completion faces)
-  for (size_t i = 0; i < kept.size(); ++i) {
+  std::unordered_map<int, std::pair<int, int>> piece;  // root -> (items, completion faces)
+  for (size_t i = 0; i < items; ++i) {
     auto& p = piece[find_root(parent, static_cast<int>(i))];
     ++p.first;
-    p.second += mc.kind[kept[i]] != FaceKind::Voronoi;
+    p.second += i < nf && mc.kind[cells.faces[i]] != FaceKind::Voronoi;
   }
   st.components = piece.size();
   int best = -1, best_size = 0;
@@ -312,42 +343,49 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
     if (p.second >= 8 && p.first >= best_size / 100) keep.insert(root);
 
   MedialMesh mesh;
+  AxisCells out;
   std::unordered_map<int, int> out_index;
-  std::vector<int> poly, out_faces;
-  for (size_t i = 0; i < kept.size(); ++i) {
-    if (!keep.count(find_root(parent, static_cast<int>(i)))) continue;
-    const int f = kept[i];
-    out_faces.push_back(f);
-    poly.clear();
-    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
-      const int node = mc.nodes[k];
-      auto [it, fresh] = out_index.emplace(node, static_cast<int>(mesh.vertices.size()));
-      if (fresh) {
-        if (node >= 0) {
-          mesh.vertices.push_back(mc.centers[node]);
-          mesh.radius.push_back(mc.radii[node]);
-        } else {
-          mesh.vertices.push_back(samples.points[-node - 1]);
-          mesh.radius.push_back(0.0);  // a sample on the boundary: its medial ball has radius 0
-        }
+  auto vertex = [&](int node) {
+    auto [it, fresh] = out_index.emplace(node, static_cast<int>(mesh.vertices.size()));
+    if (fresh) {
+      if (node >= 0) {
+        mesh.vertices.push_back(mc.centers[node]);
+        mesh.radius.push_back(mc.radii[node]);
+      } else {
+        mesh.vertices.push_back(samples.points[-node - 1]);
+        mesh.radius.push_back(0.0);  // a sample on the boundary: its medial ball has radius 0
       }
-      poly.push_back(it->second);
     }
-    mesh.add_face(poly, mc.kind[f], solid_index);
+    return it->second;
+  };
+  std::vector<int> poly;
+  for (size_t i = 0; i < items; ++i) {
+    if (!keep.count(find_root(parent, static_cast<int>(i)))) continue;
+    corners_of(i, corners);
+    poly.clear();
+    for (int node : corners) poly.push_back(vertex(node));
+    if (i < nf) {
+      out.faces.push_back(cells.faces[i]);
+      mesh.add_face(poly, mc.kind[cells.faces[i]], solid_index);
+    } else {
+      out.edges.push_back(cells.edges[i - nf]);
+      mesh.edges.push_back({poly[0], poly[1]});
+      mesh.edge_solid.push_back(solid_index);
+    }
   }
   // A medial axis that is a point (a sphere's centre) has no faces: keep its vertex.
-  if (mesh.num_faces() == 0) {
+  if (mesh.num_faces() == 0 && mesh.num_edges() == 0) {
     for (int node : mc.points) {
-      if (!inside[node] || !out_index.emplace(node, static_cast<int>(mesh.vertices.size())).second) continue;
-      mesh.vertices.push_back(mc.centers[node]);
-      mesh.radius.push_back(mc.radii[node]);
+      if (!inside[node] || out_index.count(node)) continue;
+      vertex(node);
     }
   }
   st.dropped_faces = 0;
   for (size_t f = 0; f < mc.size(); ++f) st.dropped_faces += !mc.filler[f];
   st.filler_faces = 0;
-  for (int f : out_faces) st.dropped_faces -= !mc.filler[f], st.filler_faces += mc.filler[f];
-  st.euler_characteristic = mesh.num_faces() > 0 ? euler_characteristic(mc, out_faces) : mesh.num_vertices();
+  for (int f : out.faces) st.dropped_faces -= !mc.filler[f], st.filler_faces += mc.filler[f];
+  st.bare_edges = out.edges.size();
+  st.euler_characteristic = euler_characteristic(mc, out) + (out.faces.empty() && out.edges.empty() ? static_cast<long>(mesh.num_vertices()) : 0);
   return mesh;
 }
 

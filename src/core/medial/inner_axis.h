@@ -2,6 +2,7 @@
 // labelled inside or outside the solid, and the faces inside kept.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -17,7 +18,8 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps);
 /// 1 inside, 0 outside, per cell id of mc.
 std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
                                        const InsideTest& inside, MedialAxisStats& st);
-/// The faces whose Voronoi vertices are all inside, in the pieces kept, as a mesh.
+/// The faces whose Voronoi vertices are all inside, with the topology of the inner Voronoi complex,
+/// in the pieces kept, as a mesh; segments where facets degenerated to one.
 MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
                          int solid_index, MedialAxisStats& st);
 

@@ -29,7 +29,7 @@ struct MedialAxisStats {
   std::size_t components = 0;        ///< pieces of the inner axis before stray ones are dropped
   std::size_t filler_faces = 0;      ///< unselected Voronoi facets kept for the topology
   std::size_t unattached_faces = 0;  ///< completion triangles left out: they would close a loop
-  std::size_t bare_edges = 0;        ///< 1-D parts of the repaired complex that no face carries
+  std::size_t bare_edges = 0;        ///< output edges: 1-D parts of the axis that no face carries
   long euler_characteristic = 0;     ///< V - E + F of the output faces
 };
 

@@ -1,10 +1,9 @@
 #include "preserve_topology.h"
 
 #include <algorithm>
-#include <array>
+#include <cstdint>
 #include <unordered_map>
 #include <unordered_set>
-#include <cstdint>
 
 namespace cadmedial::internal {
 
@@ -17,109 +16,123 @@ std::uint64_t edge_key(int a, int b) {
 int key_low(std::uint64_t key) { return static_cast<int>(static_cast<std::uint32_t>(key >> 32)); }
 int key_high(std::uint64_t key) { return static_cast<int>(static_cast<std::uint32_t>(key)); }
 
-// The faces' edges: ids per face corner (CSR like the faces), and per edge its faces.
+template <class F>
+void for_each_side(const MedialComplex& mc, int f, F&& fn) {
+  const int b = mc.start[f], e = mc.start[f + 1];
+  for (int k = b; k < e; ++k) fn(k - b, mc.nodes[k], mc.nodes[k + 1 < e ? k + 1 : b]);
+}
+
+// The complex's edges (sides of faces and lone edges): ids per face side (CSR like the faces),
+// and per edge the faces that hold it.
 struct EdgeIncidence {
   std::vector<int> face_start{0};  ///< per face slot (index into `faces`), into face_edge
-  std::vector<int> face_edge;      ///< edge id of corner k -> k+1
+  std::vector<int> face_edge;      ///< edge id of side k (corner k -> k+1)
   std::vector<int> edge_start{0};  ///< per edge, into edge_face
   std::vector<int> edge_face;      ///< face slots
   std::vector<std::uint64_t> key;  ///< per edge, its two corners
 };
 
-EdgeIncidence edge_incidence(const MedialComplex& mc, const std::vector<int>& faces) {
+EdgeIncidence edge_incidence(const MedialComplex& mc, const std::vector<int>& faces,
+                             const std::vector<std::array<int, 3>>& lone) {
   EdgeIncidence g;
   struct Entry {
     std::uint64_t key;
-    int slot, pos;
+    int slot, pos;  ///< -1 for a lone edge
   };
   std::vector<Entry> entries;
   for (size_t i = 0; i < faces.size(); ++i) {
-    const int b = mc.start[faces[i]], e = mc.start[faces[i] + 1];
-    for (int k = b; k < e; ++k) {
-      const int next = k + 1 < e ? k + 1 : b;
-      entries.push_back({edge_key(mc.nodes[k], mc.nodes[next]), static_cast<int>(i),
-                         g.face_start.back() + (k - b)});
-    }
-    g.face_start.push_back(g.face_start.back() + (e - b));
+    for_each_side(mc, faces[i], [&](int k, int a, int b) {
+      entries.push_back({edge_key(a, b), static_cast<int>(i), g.face_start.back() + k});
+    });
+    g.face_start.push_back(g.face_start.back() + (mc.start[faces[i] + 1] - mc.start[faces[i]]));
   }
+  for (const auto& e : lone) entries.push_back({edge_key(e[0], e[1]), -1, -1});
   std::sort(entries.begin(), entries.end(),
             [](const Entry& x, const Entry& y) { return x.key < y.key || (x.key == y.key && x.slot < y.slot); });
-  g.face_edge.resize(entries.size());
+  g.face_edge.resize(g.face_start.back());
   g.edge_face.reserve(entries.size());
   for (size_t k = 0; k < entries.size(); ++k) {
-    if (k > 0 && entries[k].key != entries[k - 1].key) g.edge_start.push_back(static_cast<int>(k));
-    if (k == 0 || entries[k].key != entries[k - 1].key) g.key.push_back(entries[k].key);
+    if (k == 0 || entries[k].key != entries[k - 1].key) {
+      if (k > 0) g.edge_start.push_back(static_cast<int>(g.edge_face.size()));
+      g.key.push_back(entries[k].key);
+    }
+    if (entries[k].slot < 0) continue;
     g.face_edge[entries[k].pos] = static_cast<int>(g.key.size()) - 1;
     g.edge_face.push_back(entries[k].slot);
   }
-  g.edge_start.push_back(static_cast<int>(entries.size()));
+  g.edge_start.push_back(static_cast<int>(g.edge_face.size()));
   return g;
 }
 
-// Edges no face holds any more but which no collapse removed either: the complex keeps them as
-// 1-cells. Those with a free end collapse in turn; the count left is the 1-D part of the axis.
-std::size_t essential_bare_edges(const EdgeIncidence& g, const std::vector<int>& count,
-                                 const std::vector<char>& removed) {
+// Edges no face holds any more but which no collapse removed either stay as 1-cells. Those with a
+// free end collapse in turn (with the end); what is left carries the topology.
+std::vector<std::array<int, 2>> essential_bare_edges(const EdgeIncidence& g, const std::vector<int>& count,
+                                                     const std::vector<char>& removed,
+                                                     const std::vector<char>& kept_segment) {
   const size_t ne = g.key.size();
-  // Per corner: its live edges (held by a face, or bare).
-  std::vector<std::pair<int, int>> ends;  // (corner, edge)
+  std::vector<std::pair<int, int>> ends;  // (corner, edge) of every live edge
   for (size_t e = 0; e < ne; ++e) {
     if (removed[e]) continue;
     ends.push_back({key_low(g.key[e]), static_cast<int>(e)});
     ends.push_back({key_high(g.key[e]), static_cast<int>(e)});
   }
   std::sort(ends.begin(), ends.end());
-  std::vector<char> bare_alive(ne, 0);
-  std::vector<int> degree;     // per run of equal corners
-  std::vector<int> run_of(ends.size());
+  // Corners numbered by run of equal corners; degree = live edges at the corner.
+  std::vector<int> degree;
+  std::vector<std::array<int, 2>> edge_ends(ne, {-1, -1});
   for (size_t k = 0; k < ends.size(); ++k) {
     if (k == 0 || ends[k].first != ends[k - 1].first) degree.push_back(0);
-    run_of[k] = static_cast<int>(degree.size()) - 1;
     ++degree.back();
+    auto& r = edge_ends[ends[k].second];
+    r[r[0] < 0 ? 0 : 1] = static_cast<int>(degree.size()) - 1;
   }
-  std::vector<std::array<int, 2>> edge_runs(ne, {-1, -1});
-  for (size_t k = 0; k < ends.size(); ++k) {
-    auto& r = edge_runs[ends[k].second];
-    r[r[0] < 0 ? 0 : 1] = run_of[k];
-  }
-  std::vector<int> stack;
+  std::vector<char> bare(ne, 0);
   std::vector<std::vector<int>> bare_at(degree.size());
   for (size_t e = 0; e < ne; ++e) {
     if (removed[e] || count[e] > 0) continue;
-    bare_alive[e] = 1;
-    for (int r : edge_runs[e]) bare_at[r].push_back(static_cast<int>(e));
+    bare[e] = 1;
+    for (int r : edge_ends[e]) bare_at[r].push_back(static_cast<int>(e));
   }
+  std::vector<int> stack;
   for (size_t r = 0; r < degree.size(); ++r)
     if (degree[r] == 1) stack.push_back(static_cast<int>(r));
-  std::size_t left = 0;
-  for (size_t e = 0; e < ne; ++e) left += bare_alive[e];
   while (!stack.empty()) {
     const int r = stack.back();
     stack.pop_back();
     if (degree[r] != 1) continue;
     for (int e : bare_at[r]) {
-      if (!bare_alive[e]) continue;
-      bare_alive[e] = 0;
-      --left;
-      for (int s : edge_runs[e])
+      if (!bare[e] || kept_segment[e]) continue;
+      bare[e] = 0;
+      for (int s : edge_ends[e])
         if (--degree[s] == 1) stack.push_back(s);
     }
   }
+  std::vector<std::array<int, 2>> left;
+  for (size_t e = 0; e < ne; ++e)
+    if (bare[e]) left.push_back({key_low(g.key[e]), key_high(g.key[e])});
   return left;
 }
 
 }  // namespace
 
-std::vector<int> collapse_fillers(const MedialComplex& mc, const std::vector<int>& faces, MedialAxisStats& st) {
-  const EdgeIncidence g = edge_incidence(mc, faces);
+AxisCells collapse_fillers(const MedialComplex& mc, const std::vector<int>& faces,
+                           const std::vector<std::array<int, 3>>& segments, MedialAxisStats& st) {
+  const EdgeIncidence g = edge_incidence(mc, faces, segments);
   const size_t ne = g.key.size();
+  // A segment of a selected facet is axis proper: it stays even with a free end.
+  std::vector<char> kept_segment(ne, 0);
+  for (const auto& sg : segments) {
+    if (sg[2]) continue;
+    const auto it = std::lower_bound(g.key.begin(), g.key.end(), edge_key(sg[0], sg[1]));
+    kept_segment[it - g.key.begin()] = 1;
+  }
   std::vector<int> count(ne);
   for (size_t e = 0; e < ne; ++e) count[e] = g.edge_start[e + 1] - g.edge_start[e];
   std::vector<char> alive(faces.size(), 1), removed(ne, 0);
   std::vector<int> queue;
   for (size_t i = 0; i < faces.size(); ++i)
     if (mc.filler[faces[i]]) queue.push_back(static_cast<int>(i));
-  // Elementary collapse: a filler face with an edge that no other face holds goes, with that edge.
+  // Elementary collapse: a filler face with a side no other face holds goes, with that side.
   // FIFO from the outermost fillers inward, so what stays hugs the selected facets.
   for (size_t head = 0; head < queue.size(); ++head) {
     const int i = queue[head];
@@ -127,7 +140,7 @@ std::vector<int> collapse_fillers(const MedialComplex& mc, const std::vector<int
     int free_edge = -1;
     for (int k = g.face_start[i]; k < g.face_start[i + 1] && free_edge < 0; ++k)
       if (count[g.face_edge[k]] == 1) free_edge = g.face_edge[k];
-    if (free_edge < 0) continue;  // queued again if a neighbour's collapse frees an edge
+    if (free_edge < 0) continue;  // queued again if a neighbour's collapse frees a side
     alive[i] = 0;
     removed[free_edge] = 1;
     for (int k = g.face_start[i]; k < g.face_start[i + 1]; ++k) {
@@ -139,40 +152,38 @@ std::vector<int> collapse_fillers(const MedialComplex& mc, const std::vector<int
       }
     }
   }
-  std::vector<int> kept;
+  AxisCells left;
   for (size_t i = 0; i < faces.size(); ++i)
-    if (alive[i]) kept.push_back(faces[i]);
-  st.bare_edges = essential_bare_edges(g, count, removed);
-  return kept;
+    if (alive[i]) left.faces.push_back(faces[i]);
+  left.edges = essential_bare_edges(g, count, removed, kept_segment);
+  return left;
 }
 
-std::vector<int> attach_by_expansion(const MedialComplex& mc, const std::vector<int>& base,
-                                     const std::vector<int>& candidates, MedialAxisStats& st) {
+AxisCells attach_by_expansion(const MedialComplex& mc, AxisCells base, const std::vector<int>& candidates,
+                              MedialAxisStats& st) {
   std::unordered_set<int> corners;
   std::unordered_set<std::uint64_t> edges;
   auto add_face = [&](int f) {
-    const int b = mc.start[f], e = mc.start[f + 1];
-    for (int k = b; k < e; ++k) {
-      corners.insert(mc.nodes[k]);
-      edges.insert(edge_key(mc.nodes[k], mc.nodes[k + 1 < e ? k + 1 : b]));
-    }
+    for_each_side(mc, f, [&](int, int a, int b) {
+      corners.insert(a);
+      edges.insert(edge_key(a, b));
+    });
   };
-  for (int f : base) add_face(f);
+  for (int f : base.faces) add_face(f);
+  for (const auto& e : base.edges) corners.insert(e[0]), corners.insert(e[1]), edges.insert(edge_key(e[0], e[1]));
   // A triangle keeps the homotopy type when what it shares with the complex is contractible: one
-  // corner, one edge, or two edges. Two corners without their edge would close a loop; all three
-  // edges would close a void or fill a loop the Voronoi part does not have.
+  // corner, one side, or two sides. Two corners without their side would close a loop; all three
+  // sides would close a void or fill a loop the Voronoi part does not have.
   auto attaches = [&](int f) {
-    const int b = mc.start[f], e = mc.start[f + 1];
-    if (e - b != 3) return false;
+    if (mc.start[f + 1] - mc.start[f] != 3) return false;
     int shared_corners = 0, shared_edges = 0;
-    for (int k = b; k < e; ++k) {
-      shared_corners += corners.count(mc.nodes[k]) > 0;
-      shared_edges += edges.count(edge_key(mc.nodes[k], mc.nodes[k + 1 < e ? k + 1 : b])) > 0;
-    }
+    for_each_side(mc, f, [&](int, int a, int b) {
+      shared_corners += corners.count(a) > 0;
+      shared_edges += edges.count(edge_key(a, b)) > 0;
+    });
     return (shared_corners == 1 && shared_edges == 0) || (shared_corners == 2 && shared_edges == 1) ||
            (shared_corners == 3 && shared_edges == 2);
   };
-  std::vector<int> kept = base;
   // Whether a face attaches changes only when a face at one of its corners is added: faces that
   // do not attach yet wait at their corners.
   std::unordered_map<int, std::vector<int>> waiting;
@@ -189,7 +200,7 @@ std::vector<int> attach_by_expansion(const MedialComplex& mc, const std::vector<
     }
     done[i] = 1;
     add_face(f);
-    kept.push_back(f);
+    base.faces.push_back(f);
     for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
       auto it = waiting.find(mc.nodes[k]);
       if (it == waiting.end()) continue;
@@ -199,24 +210,27 @@ std::vector<int> attach_by_expansion(const MedialComplex& mc, const std::vector<
     }
   }
   for (char d : done) st.unattached_faces += !d;
-  return kept;
+  return base;
 }
 
-long euler_characteristic(const MedialComplex& mc, const std::vector<int>& faces) {
+long euler_characteristic(const MedialComplex& mc, const AxisCells& cells) {
   std::vector<int> corners;
   std::vector<std::uint64_t> edges;
-  for (int f : faces) {
-    const int b = mc.start[f], e = mc.start[f + 1];
-    for (int k = b; k < e; ++k) {
-      corners.push_back(mc.nodes[k]);
-      edges.push_back(edge_key(mc.nodes[k], mc.nodes[k + 1 < e ? k + 1 : b]));
-    }
+  for (int f : cells.faces)
+    for_each_side(mc, f, [&](int, int a, int b) {
+      corners.push_back(a);
+      edges.push_back(edge_key(a, b));
+    });
+  for (const auto& e : cells.edges) {
+    corners.push_back(e[0]);
+    corners.push_back(e[1]);
+    edges.push_back(edge_key(e[0], e[1]));
   }
   std::sort(corners.begin(), corners.end());
   std::sort(edges.begin(), edges.end());
   const long v = std::unique(corners.begin(), corners.end()) - corners.begin();
   const long ed = std::unique(edges.begin(), edges.end()) - edges.begin();
-  return v - ed + static_cast<long>(faces.size());
+  return v - ed + static_cast<long>(cells.faces.size());
 }
 
 }  // namespace cadmedial::internal

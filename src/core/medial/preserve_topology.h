@@ -1,10 +1,12 @@
-// Internal to medial/: the topology repair of the inner axis. The Voronoi facets inside the solid
-// form a 2-complex with the solid's homotopy type; the selected ones alone need not (pinholes,
-// fins around a 1-D part of the axis). Collapsing every filler facet that can be collapsed, and
-// never a selected one, keeps the homotopy type and leaves the selection plus what it needs.
-// The completion triangles (4.2.2, 4.2.3) are then attached only where they keep it too.
+// Internal to medial/: the topology repair of the inner axis. The Voronoi cells inside the solid
+// (vertices, edges and facets whose corners are all inside) form a complex with the solid's
+// homotopy type; the selected facets alone need not (pinholes, fins around a 1-D part of the
+// axis). Collapsing every filler facet that can be collapsed, and never a selected one, then every
+// bare Voronoi edge with a free end, keeps the homotopy type and leaves the selection plus what it
+// needs. The completion triangles (4.2.2, 4.2.3) are then attached only where they keep it too.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "delaunay_3.h"
@@ -12,18 +14,25 @@
 
 namespace cadmedial::internal {
 
-/// Of `faces` (face indices of mc, all inside), those left after elementary collapses of filler
-/// faces through free edges. Edges left bare where no face remains are counted in
-/// st.bare_edges after their own collapse (a 1-D part of the axis the faces do not carry).
-std::vector<int> collapse_fillers(const MedialComplex& mc, const std::vector<int>& faces, MedialAxisStats& st);
+/// Part of the complex: faces of mc (by index) and segments between corners of mc.
+struct AxisCells {
+  std::vector<int> faces;
+  std::vector<std::array<int, 2>> edges;
+};
+
+/// What is left of `faces` (faces of mc, all inside) and `segments` (degenerate facets: corners
+/// and filler flag) after elementary collapses of filler faces through free sides and of filler
+/// edges no face holds through free ends. The edges left are the 1-D part of the axis.
+AxisCells collapse_fillers(const MedialComplex& mc, const std::vector<int>& faces,
+                           const std::vector<std::array<int, 3>>& segments, MedialAxisStats& st);
 
 /// `base` plus the triangles of `candidates` (completion faces) that attach to it without
 /// changing its homotopy type, tried until none attaches; the others are counted in
 /// st.unattached_faces.
-std::vector<int> attach_by_expansion(const MedialComplex& mc, const std::vector<int>& base,
-                                     const std::vector<int>& candidates, MedialAxisStats& st);
+AxisCells attach_by_expansion(const MedialComplex& mc, AxisCells base, const std::vector<int>& candidates,
+                              MedialAxisStats& st);
 
-/// V - E + F of these faces of mc, vertices and edges shared by corner index.
-long euler_characteristic(const MedialComplex& mc, const std::vector<int>& faces);
+/// V - E + F of these cells, vertices and edges shared by corner index.
+long euler_characteristic(const MedialComplex& mc, const AxisCells& cells);
 
 }  // namespace cadmedial::internal
