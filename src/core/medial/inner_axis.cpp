@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <map>
 #include <set>
@@ -53,52 +54,119 @@ int vote(const Samples& samples, int s, const Point3& x) {
 // the side of that triangle's outward normal: inside (1), outside (0), or undecided (-1).
 class ReconstructionSide {
  public:
-  ReconstructionSide(const Samples& s, const Umbrellas& u) : s_(s) {
+  ReconstructionSide(const Samples& s, const Umbrellas& u) : s_(s), u_(u) {
     tris_.reserve(u.triangles.size());
-    for (const auto& t : u.triangles) {
-      tris_.emplace_back(point(t[0]), point(t[1]), point(t[2]));
-      ids_.push_back(t);
-    }
-    tree_.insert(tris_.begin(), tris_.end());
-    if (!tris_.empty()) tree_.accelerate_distance_queries();
+    for (const auto& t : u.triangles) tris_.emplace_back(point(t[0]), point(t[1]), point(t[2]));
   }
 
-  int side(const Point3& x) const {
+  /// Against the whole mesh (an AABB tree, built on first use).
+  int side(const Point3& x) {
     if (tris_.empty()) return -1;
+    if (tree_.empty()) {
+      tree_.insert(tris_.begin(), tris_.end());
+      tree_.accelerate_distance_queries();
+    }
     const K::Point_3 q(x[0], x[1], x[2]);
     const auto [closest, it] = tree_.closest_point_and_primitive(q);
-    const std::size_t t = static_cast<std::size_t>(it - tris_.begin());
-    const auto& tri = tris_[t];
-    const K::Vector_3 n = CGAL::cross_product(tri[1] - tri[0], tri[2] - tri[0]);
-    const double n_len = std::sqrt(n.squared_length());
-    if (n_len <= 0) return -1;
-    // Outward: agree with the samples' exact normals.
-    Point3 avg{0, 0, 0};
-    double sag = 0, edge2 = 0;
-    for (int k = 0; k < 3; ++k) {
-      const int v = ids_[t][k];
-      for (int c = 0; c < 3; ++c) avg[c] += s_.normal[v][c];
-      sag = std::max(sag, static_cast<double>(s_.curvature[v]));
-      edge2 = std::max(edge2, (tri[(k + 1) % 3] - tri[k]).squared_length());
-    }
-    const double orient = avg[0] * n.x() + avg[1] * n.y() + avg[2] * n.z();
-    if (orient == 0) return -1;
-    sag = sag * edge2 / 8.0 + 1e-12 * std::sqrt(edge2);
-    const K::Vector_3 d = q - closest;
-    const double dist = std::sqrt(d.squared_length());
-    const double along = (d * n) / n_len * (orient > 0 ? 1 : -1);
-    // The nearest point is interior to the triangle when d runs along its normal.
-    if (dist <= sag || std::abs(along) < 0.999 * dist) return -1;
-    return along < 0 ? 1 : 0;
+    return side_of(q, closest, static_cast<std::size_t>(it - tris_.begin()));
+  }
+
+  /// Against the umbrellas of the given samples only: the nearest samples of a Voronoi vertex are
+  /// its cell's, so the nearest mesh point is nearly always on their triangles, and this skips
+  /// the tree search, which is slow for points equidistant from much of the surface (the core
+  /// circle of a torus).
+  int side_near(const Point3& x, const std::array<int, 4>& near) const {
+    const K::Point_3 q(x[0], x[1], x[2]);
+    double best = std::numeric_limits<double>::infinity();
+    K::Point_3 closest;
+    std::size_t best_t = 0;
+    const auto project = K().construct_projected_point_3_object();
+    for (int v : near)
+      for (int k = u_.start[v]; k < u_.start[v + 1]; ++k) {
+        const std::size_t t = static_cast<std::size_t>(u_.incident[k]);
+        const K::Point_3 c = project(tris_[t], q);
+        const double d2 = CGAL::squared_distance(c, q);
+        if (d2 < best) best = d2, closest = c, best_t = t;
+      }
+    return std::isfinite(best) ? side_of(q, closest, best_t) : -1;
   }
 
  private:
+  // Outward unit normal of triangle t (oriented by its samples' exact normals), zero if unknown.
+  K::Vector_3 outward(std::size_t t) const {
+    const auto& tri = tris_[t];
+    const K::Vector_3 n = CGAL::cross_product(tri[1] - tri[0], tri[2] - tri[0]);
+    const double len = std::sqrt(n.squared_length());
+    Point3 avg{0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c) avg[c] += s_.normal[u_.triangles[t][k]][c];
+    const double orient = avg[0] * n.x() + avg[1] * n.y() + avg[2] * n.z();
+    if (len <= 0 || orient == 0) return {0, 0, 0};
+    return n / (orient > 0 ? len : -len);
+  }
+
+  // Side of q from its closest mesh point on triangle t: by the triangle's normal when the point
+  // is interior, else by the angle-weighted pseudo-normal of the edge or vertex it lies on
+  // (Baerentzen and Aanaes), which gives the right sign for any point off a closed mesh.
+  int side_of(const K::Point_3& q, const K::Point_3& closest, std::size_t t) const {
+    const auto& tri = tris_[t];
+    double sag = 0, edge2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      sag = std::max(sag, static_cast<double>(s_.curvature[u_.triangles[t][k]]));
+      edge2 = std::max(edge2, (tri[(k + 1) % 3] - tri[k]).squared_length());
+    }
+    sag = sag * edge2 / 8.0 + 1e-12 * std::sqrt(edge2);
+    const K::Vector_3 d = q - closest;
+    if (std::sqrt(d.squared_length()) <= sag) return -1;
+    // Barycentric weights of the closest point; a corner whose weight is ~0 is not touched.
+    const K::Vector_3 n = CGAL::cross_product(tri[1] - tri[0], tri[2] - tri[0]);
+    const double area2 = n.squared_length();
+    if (area2 <= 0) return -1;
+    std::array<bool, 3> on{};
+    int touched = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double w = CGAL::cross_product(tri[(k + 2) % 3] - tri[(k + 1) % 3], closest - tri[(k + 1) % 3]) * n / area2;
+      on[k] = w > 1e-9;
+      touched += on[k];
+    }
+    K::Vector_3 pseudo(0, 0, 0);
+    if (touched == 3) {
+      pseudo = outward(t);
+    } else if (touched == 2) {
+      int a = -1, b = -1;
+      for (int k = 0; k < 3; ++k)
+        if (on[k]) (a < 0 ? a : b) = u_.triangles[t][k];
+      for (int k = u_.start[a]; k < u_.start[a + 1]; ++k) {
+        const auto& other = u_.triangles[u_.incident[k]];
+        if (other[0] == b || other[1] == b || other[2] == b) pseudo = pseudo + outward(u_.incident[k]);
+      }
+    } else {
+      int v = u_.triangles[t][0];
+      for (int k = 0; k < 3; ++k)
+        if (on[k]) v = u_.triangles[t][k];
+      const K::Point_3 pv = point(v);
+      for (int k = u_.start[v]; k < u_.start[v + 1]; ++k) {
+        const auto& other = u_.triangles[u_.incident[k]];
+        int at = 0;
+        while (at < 2 && other[at] != v) ++at;
+        K::Vector_3 e1 = point(other[(at + 1) % 3]) - pv, e2 = point(other[(at + 2) % 3]) - pv;
+        const double l1 = std::sqrt(e1.squared_length()), l2 = std::sqrt(e2.squared_length());
+        if (l1 <= 0 || l2 <= 0) continue;
+        const double angle = std::acos(std::clamp((e1 * e2) / (l1 * l2), -1.0, 1.0));
+        pseudo = pseudo + angle * outward(u_.incident[k]);
+      }
+    }
+    const double along = d * pseudo;
+    if (along == 0) return -1;
+    return along < 0 ? 1 : 0;
+  }
+
   K::Point_3 point(int i) const { return {s_.points[i][0], s_.points[i][1], s_.points[i][2]}; }
   using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
   const Samples& s_;
+  const Umbrellas& u_;
   std::vector<K::Triangle_3> tris_;
-  std::vector<std::array<int, 3>> ids_;
   Tree tree_;
 };
 
@@ -260,11 +328,15 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
       unsure.push_back(static_cast<int>(id));
   }
   if (!unsure.empty()) {
-    // Then the reconstruction mesh; what it cannot settle goes to the exact B-rep classifier.
-    const ReconstructionSide mesh(samples, umbrellas);
+    // Then the reconstruction mesh near the cell's samples, then all of it; what it cannot settle
+    // goes to the exact B-rep classifier.
+    ReconstructionSide mesh(samples, umbrellas);
     std::vector<int> still;
     for (int id : unsure) {
-      const int side = mesh.side(mc.centers[id]);
+      std::array<int, 4> near;
+      for (int j = 0; j < 4; ++j) near[j] = mc.cells[id]->vertex(j)->info();
+      int side = mesh.side_near(mc.centers[id], near);
+      if (side < 0 && used[id] == 2) side = mesh.side(mc.centers[id]);
       if (side >= 0)
         label[id] = static_cast<std::uint8_t>(side);
       else if (used[id] == 2)
