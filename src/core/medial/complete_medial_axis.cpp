@@ -99,15 +99,17 @@ namespace cadmedial::internal {
 // lie in the convex cell V_s, so they cross nothing.
 std::vector<int> fan_completions(MedialComplex& mc, const std::vector<int>& faces,
                                  const std::vector<std::uint8_t>& inside, MedialAxisStats& st) {
+  std::vector<char> in_star(mc.cells.size(), 0);
+  for (int c : mc.star_cells) in_star[c] = 1;
   std::unordered_map<int, std::vector<int>> at_sample;  // sample node -> completion faces
-  std::unordered_map<int, std::vector<int>> at_cell;    // cell -> selected Voronoi faces
+  std::unordered_map<int, std::vector<int>> at_cell;    // star cell -> selected Voronoi faces
   for (int f : faces) {
     const bool completion = mc.kind[f] != FaceKind::Voronoi;
     if (!completion && mc.filler[f]) continue;
     for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
       const int node = mc.nodes[k];
       if (node < 0 && completion) at_sample[node].push_back(f);
-      if (node >= 0 && !completion) at_cell[node].push_back(f);
+      if (node >= 0 && !completion && in_star[node]) at_cell[node].push_back(f);
     }
   }
   std::vector<int> added;

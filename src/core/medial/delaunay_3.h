@@ -33,6 +33,19 @@ using Delaunay = CGAL::Delaunay_triangulation_3<K, Tds>;
 using Cell = Delaunay::Cell_handle;
 using Vertex = Delaunay::Vertex_handle;
 
+/// A value per node of a MedialComplex (cell ids and samples), in flat arrays: the inner stage
+/// looks nodes up hundreds of thousands of times.
+template <class T>
+class NodeMap {
+ public:
+  NodeMap(std::size_t cells, std::size_t samples, T init) : cells_(cells, init), samples_(samples, init) {}
+  T& operator[](int node) { return node >= 0 ? cells_[node] : samples_[-node - 1]; }
+  const T& operator[](int node) const { return node >= 0 ? cells_[node] : samples_[-node - 1]; }
+
+ private:
+  std::vector<T> cells_, samples_;
+};
+
 /// Faces before separation: their corners are Voronoi vertices (cells, id >= 0) or samples
 /// (encoded -(sample+1)).
 struct MedialComplex {

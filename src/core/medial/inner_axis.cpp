@@ -390,14 +390,17 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
     else
       out.assign(cells.edges[i - nf].begin(), cells.edges[i - nf].end());
   };
-  std::unordered_map<int, int> node_owner;
+  NodeMap<int> node_owner(mc.cells.size(), samples.size(), -1);
   std::vector<int> parent(items), corners;
   std::iota(parent.begin(), parent.end(), 0);
   for (size_t i = 0; i < items; ++i) {
     corners_of(i, corners);
     for (int node : corners) {
-      auto [it, fresh] = node_owner.emplace(node, static_cast<int>(i));
-      if (!fresh) parent[find_root(parent, static_cast<int>(i))] = find_root(parent, it->second);
+      int& owner = node_owner[node];
+      if (owner < 0)
+        owner = static_cast<int>(i);
+      else
+        parent[find_root(parent, static_cast<int>(i))] = find_root(parent, owner);
     }
   }
   std::unordered_map<int, std::pair<int, int>> piece;  // root -> (items, completion faces)
@@ -416,10 +419,11 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
 
   MedialMesh mesh;
   AxisCells out;
-  std::unordered_map<int, int> out_index;
+  NodeMap<int> out_index(mc.cells.size(), samples.size(), -1);
   auto vertex = [&](int node) {
-    auto [it, fresh] = out_index.emplace(node, static_cast<int>(mesh.vertices.size()));
-    if (fresh) {
+    int& index = out_index[node];
+    if (index < 0) {
+      index = static_cast<int>(mesh.vertices.size());
       if (node >= 0) {
         mesh.vertices.push_back(mc.centers[node]);
         mesh.radius.push_back(mc.radii[node]);
@@ -428,7 +432,7 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
         mesh.radius.push_back(0.0);  // a sample on the boundary: its medial ball has radius 0
       }
     }
-    return it->second;
+    return index;
   };
   std::vector<int> poly;
   for (size_t i = 0; i < items; ++i) {
@@ -448,7 +452,7 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
   // A medial axis that is a point (a sphere's centre) has no faces: keep its vertex.
   if (mesh.num_faces() == 0 && mesh.num_edges() == 0) {
     for (int node : mc.points) {
-      if (!inside[node] || out_index.count(node)) continue;
+      if (!inside[node] || out_index[node] >= 0) continue;
       vertex(node);
     }
   }

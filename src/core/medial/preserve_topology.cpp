@@ -161,16 +161,21 @@ AxisCells collapse_fillers(const MedialComplex& mc, const std::vector<int>& face
 
 AxisCells attach_by_expansion(const MedialComplex& mc, AxisCells base, const std::vector<int>& candidates,
                               MedialAxisStats& st) {
+  // Only corners and sides of the candidates matter: the sets hold the complex's cells among them.
+  std::unordered_set<int> candidate_corners;
+  for (int f : candidates)
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) candidate_corners.insert(mc.nodes[k]);
   std::unordered_set<int> corners;
   std::unordered_set<std::uint64_t> edges;
-  auto add_face = [&](int f) {
-    for_each_side(mc, f, [&](int, int a, int b) {
-      corners.insert(a);
-      edges.insert(edge_key(a, b));
-    });
+  auto add_side = [&](int a, int b) {
+    const bool ca = candidate_corners.count(a) > 0, cb = candidate_corners.count(b) > 0;
+    if (ca) corners.insert(a);
+    if (cb) corners.insert(b);
+    if (ca && cb) edges.insert(edge_key(a, b));
   };
+  auto add_face = [&](int f) { for_each_side(mc, f, [&](int, int a, int b) { add_side(a, b); }); };
   for (int f : base.faces) add_face(f);
-  for (const auto& e : base.edges) corners.insert(e[0]), corners.insert(e[1]), edges.insert(edge_key(e[0], e[1]));
+  for (const auto& e : base.edges) add_side(e[0], e[1]);
   // A triangle keeps the homotopy type when what it shares with the complex is contractible: one
   // corner, one side, or two sides. Two corners without their side would close a loop; all three
   // sides would close a void or fill a loop the Voronoi part does not have.
