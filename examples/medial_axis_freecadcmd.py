@@ -25,10 +25,10 @@ def main():
     part = doc.addObject("Part::Feature", "Part")
     part.Shape = Part.read(source)
     feature = cadmedial.app.make_medial_axis(part, samples=samples, shape=True)
-    print("%s: %d samples, %d vertices, %d faces, radius %.4g to %.4g mm, %.2f s"
+    print("%s: %d samples, %d vertices, %d faces, %d edges, radius %.4g to %.4g mm, %.2f s"
           % (os.path.basename(source), feature.SampleCount, feature.VertexCount,
-             feature.FaceCount, feature.RadiusMin.Value, feature.RadiusMax.Value,
-             feature.ComputeTime))
+             feature.FaceCount, feature.EdgeCount, feature.RadiusMin.Value,
+             feature.RadiusMax.Value, feature.ComputeTime))
     doc.saveAs(os.path.abspath(target))
     print("saved", target)
 

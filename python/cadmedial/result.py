@@ -65,8 +65,11 @@ class MedialAxisResult:
     faces       Faces: the polygons (Voronoi facets and completion triangles)
     face_kind   (F,) uint8 FaceKind of each face
     face_solid  (F,) int32 index of the input solid each face belongs to
-    stats       dict: samples, vertices, faces, spacing, timings {stage: seconds}, peak_rss_mb,
-                solids (per-solid figures); empty for a loaded file
+    edges       (E, 2) int32 vertex indices of the 1-D edges: segments of the axis that no face
+                carries, where the axis is a curve (a torus's core circle)
+    edge_solid  (E,) int32 index of the input solid each edge belongs to
+    stats       dict: samples, vertices, faces, edges, spacing, timings {stage: seconds},
+                peak_rss_mb, solids (per-solid figures); empty for a loaded file
     Arrays are read-only views into the engine's mesh.
     """
 
@@ -78,6 +81,8 @@ class MedialAxisResult:
         self.faces = Faces(mesh.face_start, mesh.face_vertices)
         self.face_kind = mesh.kind
         self.face_solid = mesh.solid
+        self.edges = mesh.edges
+        self.edge_solid = mesh.edge_solid
 
     @property
     def num_vertices(self):
@@ -87,18 +92,24 @@ class MedialAxisResult:
     def num_faces(self):
         return self.mesh.num_faces
 
+    @property
+    def num_edges(self):
+        return self.mesh.num_edges
+
     def triangles(self):
         """(T, 3) int32 fan triangulation of the faces (see Faces.triangulate)."""
         return self.faces.triangulate()[0]
 
     def save(self, path):
-        """Writes .ply (binary, with radius, kind and solid), .obj or .ma, chosen by extension."""
+        """Writes .ply (binary, with radius, kind and solid, and the edges with their solid), .obj
+        (edges as `l` lines) or .ma (edges as extra `e` lines), chosen by extension."""
         self.mesh.save(os.fspath(path))
 
     def to_brep(self):
-        """BREP text of a compound with one planar face per polygon (for FreeCAD's Part)."""
+        """BREP text of a compound with one planar face per polygon and one straight edge per
+        1-D edge (for FreeCAD's Part)."""
         return self.mesh.to_brep()
 
     def __repr__(self):
-        return "<cadmedial.MedialAxisResult %d vertices, %d faces>" % (self.num_vertices,
-                                                                       self.num_faces)
+        return "<cadmedial.MedialAxisResult %d vertices, %d faces, %d edges>" % (
+            self.num_vertices, self.num_faces, self.num_edges)

@@ -3,7 +3,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,6 +23,7 @@ namespace {
 
 static_assert(sizeof(Point3) == 3 * sizeof(double), "Point3 must be three packed doubles");
 static_assert(sizeof(FaceKind) == sizeof(std::uint8_t), "FaceKind must be one byte");
+static_assert(sizeof(std::array<int, 2>) == 2 * sizeof(int), "an edge must be two packed ints");
 
 // A read-only numpy array over `data`, owned by `owner` (the Python MedialMesh).
 template <class T>
@@ -47,7 +50,9 @@ using CArray = py::array_t<T, py::array::c_style | py::array::forcecast>;
 MedialMesh mesh_from_arrays(const CArray<double>& vertices, const CArray<double>& radius,
                             const CArray<std::int64_t>& face_start,
                             const CArray<std::int64_t>& face_vertices,
-                            const CArray<std::int64_t>& kind, const CArray<std::int64_t>& solid) {
+                            const CArray<std::int64_t>& kind, const CArray<std::int64_t>& solid,
+                            const std::optional<CArray<std::int64_t>>& edges,
+                            const std::optional<CArray<std::int64_t>>& edge_solid) {
   if (vertices.ndim() != 2 || vertices.shape(1) != 3)
     bad("vertices must have shape (N, 3), got " + shape_text(vertices));
   const py::ssize_t n = vertices.shape(0);
@@ -98,6 +103,26 @@ MedialMesh mesh_from_arrays(const CArray<double>& vertices, const CArray<double>
           std::to_string(k(face)));
     mesh.add_face(polygon, static_cast<FaceKind>(k(face)), static_cast<int>(s(face)));
   }
+
+  // 1-D edges: both arrays or neither (a mesh without edges).
+  if (edges.has_value() != edge_solid.has_value()) bad("edges and edge_solid must be given together");
+  if (edges) {
+    if (edges->ndim() != 2 || edges->shape(1) != 2)
+      bad("edges must have shape (E, 2), got " + shape_text(*edges));
+    const py::ssize_t ne = edges->shape(0);
+    if (edge_solid->ndim() != 1 || edge_solid->shape(0) != ne)
+      bad("edge_solid must have shape (" + std::to_string(ne) + ",) (one per edge), got " + shape_text(*edge_solid));
+    auto e = edges->unchecked<2>();
+    auto es = edge_solid->unchecked<1>();
+    for (py::ssize_t i = 0; i < ne; ++i) {
+      for (int j = 0; j < 2; ++j)
+        if (e(i, j) < 0 || e(i, j) >= n)
+          bad("edge " + std::to_string(i) + " refers to vertex " + std::to_string(e(i, j)) + ", outside [0, " +
+              std::to_string(n) + ")");
+      mesh.edges.push_back({static_cast<int>(e(i, 0)), static_cast<int>(e(i, 1))});
+      mesh.edge_solid.push_back(static_cast<int>(es(i)));
+    }
+  }
   return mesh;
 }
 
@@ -107,13 +132,17 @@ void bind_mesh(py::module_& m) {
   py::class_<MedialMesh>(m, "MedialMesh",
                          "The medial mesh: polygons in CSR form (face f has the vertices "
                          "face_vertices[face_start[f]:face_start[f+1]]), a radius per vertex, a "
-                         "kind (0 voronoi, 1 edge, 2 corner) and a solid index per face.\n"
+                         "kind (0 voronoi, 1 edge, 2 corner) and a solid index per face; 1-D edges "
+                         "(vertex pairs, with a solid index each) where the axis is a curve that no "
+                         "face carries.\n"
                          "Array attributes are read-only views into this object.")
       .def(py::init(&mesh_from_arrays), py::arg("vertices"), py::arg("radius"),
            py::arg("face_start"), py::arg("face_vertices"), py::arg("kind"), py::arg("solid"),
+           py::arg("edges") = py::none(), py::arg("edge_solid") = py::none(),
            "Builds a mesh from arrays; raises InvalidInput naming the first array that is wrong.")
       .def_property_readonly("num_vertices", &MedialMesh::num_vertices)
       .def_property_readonly("num_faces", &MedialMesh::num_faces)
+      .def_property_readonly("num_edges", &MedialMesh::num_edges)
       .def_property_readonly(
           "vertices",
           [](py::object self) {
@@ -160,6 +189,21 @@ void bind_mesh(py::module_& m) {
             return readonly_view(mesh.solid.data(), {static_cast<py::ssize_t>(mesh.solid.size())}, self);
           },
           "(F,) int32 index of the input solid of each face")
+      .def_property_readonly(
+          "edges",
+          [](py::object self) {
+            const auto& mesh = self.cast<const MedialMesh&>();
+            return readonly_view(reinterpret_cast<const int*>(mesh.edges.data()),
+                                 {static_cast<py::ssize_t>(mesh.edges.size()), 2}, self);
+          },
+          "(E, 2) int32 vertex indices of the 1-D edges (segments of the axis no face carries)")
+      .def_property_readonly(
+          "edge_solid",
+          [](py::object self) {
+            const auto& mesh = self.cast<const MedialMesh&>();
+            return readonly_view(mesh.edge_solid.data(), {static_cast<py::ssize_t>(mesh.edge_solid.size())}, self);
+          },
+          "(E,) int32 index of the input solid of each 1-D edge")
       .def(
           "save",
           [](const MedialMesh& mesh, const std::string& path) {
@@ -179,10 +223,12 @@ void bind_mesh(py::module_& m) {
             }
             return py::str(text);
           },
-          "BREP text of a compound with one planar face per polygon (degenerate ones skipped).")
+          "BREP text of a compound with one planar face per polygon (degenerate ones skipped) and "
+          "one straight edge per 1-D edge.")
       .def("__repr__", [](const MedialMesh& mesh) {
         return "<cadmedial._core.MedialMesh " + std::to_string(mesh.num_vertices()) +
-               " vertices, " + std::to_string(mesh.num_faces()) + " faces>";
+               " vertices, " + std::to_string(mesh.num_faces()) + " faces, " + std::to_string(mesh.num_edges()) +
+               " edges>";
       });
 
   m.def(

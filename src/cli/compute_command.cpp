@@ -39,8 +39,14 @@ int run_compute(const Args& args) {
   summary.precision(4);
   summary << "cadmedial: " << loaded.solids.size() << (loaded.solids.size() == 1 ? " solid, " : " solids, ")
           << result.stats.samples << " samples (spacing " << result.stats.spacing << "), medial mesh of "
-          << result.mesh.num_vertices() << " vertices and " << result.mesh.num_faces() << " faces in " << seconds
-          << " s; wrote " << args.output;
+          << result.mesh.num_vertices() << " vertices";
+  // Edges only when there are some: most parts have none, and the line stays as it was for them.
+  if (result.mesh.num_edges() > 0)
+    summary << ", " << result.mesh.num_faces() << " faces and " << result.mesh.num_edges()
+            << (result.mesh.num_edges() == 1 ? " edge" : " edges");
+  else
+    summary << " and " << result.mesh.num_faces() << " faces";
+  summary << " in " << seconds << " s; wrote " << args.output;
   if (!args.stats.empty()) summary << " and " << args.stats;
   summary << ".\n";
   std::fputs(summary.str().c_str(), stdout);

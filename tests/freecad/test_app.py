@@ -140,6 +140,36 @@ def test_part_shape_has_one_planar_face_per_polygon(doc):
         assert a == pytest.approx(b, abs=1e-4)
 
 
+def test_torus_edges_are_counted_and_in_the_part_shape(doc):
+    torus = doc.addObject("Part::Torus", "Torus")
+    torus.Radius1, torus.Radius2 = 10.0, 3.0
+    doc.recompute()
+    feature = medial_app.make_medial_axis(torus, samples=SAMPLES, shape=True)
+    result = medial_app.medial_result(feature)
+    # The torus's axis is its core circle: there the engine's mesh has 1-D edges.
+    assert result.num_edges > 0
+    assert feature.EdgeCount == result.num_edges == result.stats["edges"]
+    assert feature.getEditorMode("EdgeCount") == ["ReadOnly"]
+    # The mesh cannot show them; the Part shape holds each as a free edge of its compound.
+    shape = doc.getObject("MedialShape").Shape
+    free = [child for child in shape.childShapes() if child.ShapeType == "Edge"]
+    assert len(free) == result.num_edges
+    ends = result.vertices[result.edges]
+    assert sum(e.Length for e in free) == pytest.approx(
+        float(np.linalg.norm(ends[:, 1] - ends[:, 0], axis=1).sum()), rel=1e-9)
+
+
+def test_document_saved_before_edge_count_gets_it_on_reopening(doc, tmp_path):
+    feature = medial_app.make_medial_axis(add_box(doc), samples=SAMPLES)
+    feature.removeProperty("EdgeCount")  # as saved by a version without the property
+    doc = reopen(doc, tmp_path)
+    feature = doc.getObject("MedialAxis")
+    assert feature.EdgeCount == 0  # such results had no edges
+    assert feature.getEditorMode("EdgeCount") == ["ReadOnly"]
+    assert "Touched" not in feature.State
+    assert feature.Status == "ok"
+
+
 def test_non_solid_source_raises_reports_and_adds_nothing(doc, capfd):
     plane = doc.addObject("Part::Plane", "Plane")
     doc.recompute()

@@ -10,7 +10,7 @@ from conftest import SAMPLES, assert_same_mesh
 
 
 def ply_counts(path):
-    """(vertices, faces) from a PLY header, read without the engine's reader."""
+    """(vertices, faces, edges) from a PLY header, read without the engine's reader."""
     counts = {}
     with open(path, "rb") as f:
         for line in f:
@@ -19,10 +19,11 @@ def ply_counts(path):
                 counts[words[1]] = int(words[2])
             if words == ["end_header"]:
                 break
-    return counts["vertex"], counts["face"]
+    return counts["vertex"], counts["face"], counts["edge"]
 
 
-@pytest.mark.parametrize("name", ["box_10x20x30.step", "l_bracket.brep", "two_cubes.brep"])
+@pytest.mark.parametrize("name", ["box_10x20x30.step", "l_bracket.brep", "two_cubes.brep",
+                                  "torus_10_3.brep"])
 def test_python_matches_cli(cli, data, tmp_path, name):
     source = data(name)
     ply, stats = tmp_path / "out.ply", tmp_path / "stats.json"
@@ -32,10 +33,10 @@ def test_python_matches_cli(cli, data, tmp_path, name):
     assert run.returncode == 0, run.stderr
     ours = cadmedial.compute(source, samples=SAMPLES, theta=5.0, rho=8.0)
 
-    assert ply_counts(ply) == (ours.num_vertices, ours.num_faces)
+    assert ply_counts(ply) == (ours.num_vertices, ours.num_faces, ours.num_edges)
     assert_same_mesh(cadmedial.load(ply), ours)
     cli_stats = json.loads(stats.read_text())
-    for key in ("samples", "vertices", "faces"):
+    for key in ("samples", "vertices", "faces", "edges"):
         assert cli_stats[key] == ours.stats[key], key
     assert cli_stats["spacing"] == pytest.approx(ours.stats["spacing"], rel=1e-9)
 

@@ -97,6 +97,10 @@ def good_arrays():
     ({"face_start": [0, 2, 6]}, r"face 0 has 2 vertices"),
     ({"kind": [0, 7]}, r"kind\[1\] must be 0 \(voronoi\), 1 \(edge\) or 2 \(corner\), got 7"),
     ({"solid": [0]}, r"solid must have shape \(2,\)"),
+    ({"edges": [[0, 1]]}, r"edges and edge_solid must be given together"),
+    ({"edges": [[0, 1, 2]], "edge_solid": [0]}, r"edges must have shape \(E, 2\), got \(1, 3\)"),
+    ({"edges": [[0, 1]], "edge_solid": [0, 0]}, r"edge_solid must have shape \(1,\) \(one per edge\)"),
+    ({"edges": [[0, 1], [2, 9]], "edge_solid": [0, 0]}, r"edge 1 refers to vertex 9"),
 ])
 def test_mesh_from_arrays_checks_shapes_at_the_boundary(change, message):
     arrays = good_arrays()

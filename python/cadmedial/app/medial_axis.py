@@ -8,8 +8,10 @@ What the document keeps (so reopening needs no recompute):
   Mesh          the polygons fanned into triangles (all of them: non-manifold junctions too);
                 points in the engine's vertex order
   RadiusColors  one colour per point (the view provider's per-vertex colouring)
-  ResultFile    the engine's own mesh as binary PLY (polygons, radius, kind, solid) for export
-                and for the Part shape
+  ResultFile    the engine's own mesh as binary PLY (polygons, radius, kind, solid, 1-D edges)
+                for export and for the Part shape
+The 1-D edges of the axis (where it is a curve no face carries) cannot be shown by a Mesh
+feature: EdgeCount says how many there are, and the MedialShape (Part) holds them as edges.
 """
 
 import os
@@ -29,6 +31,10 @@ from .registry import attach_view_provider
 INPUTS = "Medial Axis"
 OUTPUTS = "Result"
 READ_ONLY, HIDDEN = 1, 2
+# Read-only counts added after the first release: documents saved before lack them, and get them
+# when reopened (see onDocumentRestored). Their default, 0, is right for those: no edges then.
+LATER_COUNTS = [("App::PropertyInteger", "EdgeCount",
+                 "1-D edges of the medial mesh (segments of the axis that no face carries)")]
 
 
 class MedialAxis:
@@ -61,6 +67,7 @@ class MedialAxis:
                 ("App::PropertyString", "Status", "'ok', or why the last compute failed")]:
             add(kind, name, OUTPUTS, doc)
             obj.setEditorMode(name, READ_ONLY)
+        add_later_counts(obj)
         add("App::PropertyColorList", "RadiusColors", OUTPUTS, "Colour of each mesh point by medial radius")
         add("App::PropertyFileIncluded", "ResultFile", OUTPUTS, "The medial mesh as binary PLY")
         obj.setEditorMode("RadiusColors", HIDDEN)
@@ -81,6 +88,7 @@ class MedialAxis:
 
     def onDocumentRestored(self, obj):
         self._init_transient()
+        add_later_counts(obj)
 
     def execute(self, obj):
         started = time.perf_counter()
@@ -102,6 +110,14 @@ class MedialAxis:
         if pending is not None and pending[0] == parameters_of(obj):
             return pending[1]
         return None
+
+
+def add_later_counts(obj):
+    """Adds the read-only counts of LATER_COUNTS that obj lacks."""
+    for kind, name, doc in LATER_COUNTS:
+        if name not in obj.PropertiesList:
+            obj.addProperty(kind, name, OUTPUTS, doc)
+            obj.setEditorMode(name, READ_ONLY)
 
 
 def parameters_of(obj):
@@ -176,6 +192,7 @@ def store_result(obj, result):
     obj.SpacingUsed = float(stats.get("spacing", 0.0))
     obj.VertexCount = result.num_vertices
     obj.FaceCount = result.num_faces
+    obj.EdgeCount = result.num_edges
     obj.Timings = ["%s: %.3f s" % (stage, seconds)
                    for stage, seconds in stats.get("timings", {}).items()]
     folder = tempfile.mkdtemp(prefix="cadmedial-")

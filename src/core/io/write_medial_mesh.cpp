@@ -3,14 +3,19 @@
 // Text numbers are written with std::to_chars (the shortest text that parses back to the same
 // double), so OBJ and .ma round-trip exactly, like PLY's raw doubles.
 // What each format keeps:
-// - PLY keeps everything: x y z radius per vertex, polygons, kind and solid per face. Faces are
-//   written as `list uchar int`; only a mesh with a polygon of more than 255 vertices is written as
-//   `list uint int` (still standard PLY) since uchar cannot count it.
-// - OBJ keeps positions and polygons; the radius goes in a `vr r` line after each `v` line (readers
-//   skip keywords they do not know). Kind and solid are lost: read back as Voronoi / solid 0.
-// - .ma (Q-MAT / MATFP) keeps positions, radius and triangles: polygons are fanned from their first
-//   vertex, and edges are the unique edges of those triangles, diagonals included. Read back,
-//   faces are those triangles, kind Voronoi, solid 0.
+// - PLY keeps everything: x y z radius per vertex, polygons, kind and solid per face, the 1-D edges
+//   (`vertex1 vertex2 solid`) per edge. Faces are written as `list uchar int`; only a mesh with a
+//   polygon of more than 255 vertices is written as `list uint int` (still standard PLY) since
+//   uchar cannot count it. The edge element is written even when empty: the schema is then the
+//   same for every file, so a script can read `edge` unconditionally, and viewers (MeshLab,
+//   Open3D) skip elements they do not draw. Files without it (written before) read as no edges.
+// - OBJ keeps positions, polygons and 1-D edges (`l i j`); the radius goes in a `vr r` line after
+//   each `v` line (readers skip keywords they do not know). Kind and solid are lost: read back as
+//   Voronoi / solid 0.
+// - .ma (Q-MAT / MATFP) keeps positions, radius, triangles and 1-D edges: polygons are fanned from
+//   their first vertex; the `e` lines are the unique sides of those triangles (diagonals included)
+//   followed by the 1-D edges that are not such a side. Read back, faces are those triangles, kind
+//   Voronoi, solid 0, and every `e` line that is no triangle's side is a 1-D edge, solid 0.
 #include "write_medial_mesh.h"
 #include "write_atomically.h"
 
@@ -27,6 +32,7 @@
 #include <fstream>
 #include <istream>
 #include <ostream>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -68,6 +74,13 @@ void check_mesh(const MedialMesh& m) {
     if (m.face_start[f + 1] < m.face_start[f]) fail("face_start decreases at face " + std::to_string(f));
   for (int v : m.face_vertices)
     if (v < 0 || static_cast<std::size_t>(v) >= nv) fail("vertex index " + std::to_string(v) + " out of range");
+  if (m.edge_solid.size() != m.edges.size())
+    fail("edge_solid has " + std::to_string(m.edge_solid.size()) + " values for " + std::to_string(m.edges.size()) +
+         " edges");
+  for (std::size_t e = 0; e < m.edges.size(); ++e)
+    for (int v : m.edges[e])
+      if (v < 0 || static_cast<std::size_t>(v) >= nv)
+        fail("edge " + std::to_string(e) + " has vertex index " + std::to_string(v) + " out of range");
 }
 
 // ---- small formatting helpers ---------------------------------------------------------------
@@ -116,7 +129,9 @@ void write_ply(const MedialMesh& mesh, std::ostream& out) {
   buf += "property double x\nproperty double y\nproperty double z\nproperty double radius\n";
   buf += "element face " + std::to_string(mesh.num_faces()) + "\n";
   buf += wide ? "property list uint int vertex_indices\n" : "property list uchar int vertex_indices\n";
-  buf += "property uchar kind\nproperty int solid\nend_header\n";
+  buf += "property uchar kind\nproperty int solid\n";
+  buf += "element edge " + std::to_string(mesh.num_edges()) + "\n";
+  buf += "property int vertex1\nproperty int vertex2\nproperty int solid\nend_header\n";
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
     for (double c : mesh.vertices[v]) put_le_double(buf, c);
     put_le_double(buf, mesh.radius[v]);
@@ -131,6 +146,12 @@ void write_ply(const MedialMesh& mesh, std::ostream& out) {
     put_le(buf, static_cast<std::uint32_t>(mesh.solid[f]));
     drain(buf, out);
   }
+  for (std::size_t e = 0; e < mesh.num_edges(); ++e) {
+    put_le(buf, static_cast<std::uint32_t>(mesh.edges[e][0]));
+    put_le(buf, static_cast<std::uint32_t>(mesh.edges[e][1]));
+    put_le(buf, static_cast<std::uint32_t>(mesh.edge_solid[e]));
+    drain(buf, out);
+  }
   drain(buf, out, true);
 }
 
@@ -138,7 +159,7 @@ void write_obj(const MedialMesh& mesh, std::ostream& out) {
   check_mesh(mesh);
   std::string buf;
   buf += "# cadmedial medial axis: " + std::to_string(mesh.num_vertices()) + " vertices, " +
-         std::to_string(mesh.num_faces()) + " faces\n";
+         std::to_string(mesh.num_faces()) + " faces, " + std::to_string(mesh.num_edges()) + " edges\n";
   buf += "# each 'v x y z' is followed by 'vr r': the medial radius of that vertex (not standard OBJ; readers skip it)\n";
   for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
     buf += "v ";
@@ -161,6 +182,15 @@ void write_obj(const MedialMesh& mesh, std::ostream& out) {
     buf += '\n';
     drain(buf, out);
   }
+  // The 1-D edges as polylines of one segment each.
+  for (const auto& e : mesh.edges) {
+    buf += "l ";
+    put_int(buf, e[0] + 1LL);
+    buf += ' ';
+    put_int(buf, e[1] + 1LL);
+    buf += '\n';
+    drain(buf, out);
+  }
   drain(buf, out, true);
 }
 
@@ -177,6 +207,15 @@ void write_ma(const MedialMesh& mesh, std::ostream& out) {
     for (int i = 0; i < 3; ++i) edges.emplace_back(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  // Then the 1-D edges in the mesh's order (so that they read back in it), each once, and none
+  // that is already a triangle's side: ne counts every segment of the axis exactly once.
+  const std::size_t sides = edges.size();
+  std::set<std::pair<int, int>> bare;
+  for (const auto& e : mesh.edges) {
+    const std::pair<int, int> key(std::min(e[0], e[1]), std::max(e[0], e[1]));
+    if (std::binary_search(edges.begin(), edges.begin() + sides, key) || !bare.insert(key).second) continue;
+    edges.emplace_back(e[0], e[1]);
+  }
 
   std::string buf;
   buf += std::to_string(mesh.num_vertices()) + " " + std::to_string(edges.size()) + " " +
@@ -422,6 +461,25 @@ MedialMesh read_ply(const std::string& path, std::istream& in) {
             bad(path, "PLY: face " + std::to_string(f) + " has vertex index " + std::to_string(v) + " out of range");
         mesh.add_face(polygon, kind, solid);
       }
+    } else if (e.name == "edge") {
+      mesh.edges.reserve(e.count);
+      for (std::size_t k = 0; k < e.count; ++k) {
+        long long ends[2] = {-1, -1};
+        int solid = 0;
+        for (const PlyProperty& p : e.properties) {
+          if (p.list) bad(path, "PLY: list property '" + p.name + "' on edges");
+          const double x = read_ply_value(in, p.type, path);
+          if (p.name == "vertex1") ends[0] = static_cast<long long>(x);
+          else if (p.name == "vertex2") ends[1] = static_cast<long long>(x);
+          else if (p.name == "solid") solid = static_cast<int>(x);
+        }
+        for (long long v : ends)
+          if (v < 0 || static_cast<std::size_t>(v) >= mesh.vertices.size())
+            bad(path, "PLY: edge " + std::to_string(k) + " has vertex index " + std::to_string(v) +
+                          " out of range (or no vertex1 / vertex2)");
+        mesh.edges.push_back({static_cast<int>(ends[0]), static_cast<int>(ends[1])});
+        mesh.edge_solid.push_back(solid);
+      }
     } else {
       bad(path, "PLY: unexpected element '" + e.name + "'");
     }
@@ -434,6 +492,13 @@ MedialMesh read_obj(const std::string& path, std::istream& in) {
   std::string line;
   std::vector<std::vector<int>> faces;
   std::vector<std::size_t> face_line;
+  std::vector<std::array<long long, 2>> segments;
+  std::vector<std::size_t> segment_line;
+  // "f 1/2/3" or "l 1/2": only the vertex index matters; negative indices count from the end so far.
+  auto vertex_index = [&](std::size_t n, const std::string& token) {
+    const long long idx = parse_int(path, n, token.substr(0, token.find('/')));
+    return idx < 0 ? static_cast<long long>(mesh.vertices.size()) + idx : idx - 1;
+  };
   for (std::size_t n = 1; std::getline(in, line); ++n) {
     const auto t = split(line);
     if (t.empty() || t[0][0] == '#') continue;
@@ -446,20 +511,28 @@ MedialMesh read_obj(const std::string& path, std::istream& in) {
       mesh.radius.back() = parse_double(path, n, t[1]);
     } else if (t[0] == "f") {
       std::vector<int> polygon;
-      for (std::size_t i = 1; i < t.size(); ++i) {
-        // "f 1/2/3": only the vertex index matters; negative indices count from the end so far.
-        long long idx = parse_int(path, n, t[i].substr(0, t[i].find('/')));
-        idx = idx < 0 ? static_cast<long long>(mesh.vertices.size()) + idx : idx - 1;
-        polygon.push_back(static_cast<int>(idx));
-      }
+      for (std::size_t i = 1; i < t.size(); ++i) polygon.push_back(static_cast<int>(vertex_index(n, t[i])));
       faces.push_back(std::move(polygon));
       face_line.push_back(n);
+    } else if (t[0] == "l") {
+      // A polyline: one edge per consecutive pair (this file's writer puts one segment per line).
+      if (t.size() < 3) bad(path, "line " + std::to_string(n) + ": 'l' needs at least two indices");
+      for (std::size_t i = 1; i + 1 < t.size(); ++i) {
+        segments.push_back({vertex_index(n, t[i]), vertex_index(n, t[i + 1])});
+        segment_line.push_back(n);
+      }
     }
   }
   // Without vr lines (an OBJ from another tool) every radius stays 0.
   for (std::size_t f = 0; f < faces.size(); ++f) {
     for (int& v : faces[f]) v = checked_index(path, face_line[f], v, mesh.vertices.size());
     mesh.add_face(faces[f], FaceKind::Voronoi, 0);
+  }
+  for (std::size_t e = 0; e < segments.size(); ++e) {
+    const std::size_t nv = mesh.vertices.size();
+    mesh.edges.push_back({checked_index(path, segment_line[e], segments[e][0], nv),
+                          checked_index(path, segment_line[e], segments[e][1], nv)});
+    mesh.edge_solid.push_back(0);
   }
   return mesh;
 }
@@ -474,6 +547,7 @@ MedialMesh read_ma(const std::string& path, std::istream& in) {
   if (nv < 0 || ne < 0 || nf < 0) bad(path, "line " + std::to_string(n) + ": negative count");
   MedialMesh mesh;
   long long seen_e = 0;
+  std::vector<std::array<int, 2>> e_lines;
   while (std::getline(in, line)) {
     ++n;
     const auto t = split(line);
@@ -484,7 +558,9 @@ MedialMesh read_ma(const std::string& path, std::istream& in) {
       mesh.radius.push_back(parse_double(path, n, t[4]));
     } else if (t[0] == "e") {
       if (t.size() != 3) bad(path, "line " + std::to_string(n) + ": 'e' needs two indices");
-      for (int i = 1; i <= 2; ++i) checked_index(path, n, parse_int(path, n, t[i]), static_cast<std::size_t>(nv));
+      std::array<int, 2> e;
+      for (int i = 0; i < 2; ++i) e[i] = checked_index(path, n, parse_int(path, n, t[i + 1]), static_cast<std::size_t>(nv));
+      e_lines.push_back(e);
       ++seen_e;
     } else if (t[0] == "f") {
       if (t.size() != 4) bad(path, "line " + std::to_string(n) + ": 'f' needs three indices");
@@ -500,6 +576,19 @@ MedialMesh read_ma(const std::string& path, std::istream& in) {
     bad(path, "the header says " + std::to_string(nv) + " " + std::to_string(ne) + " " + std::to_string(nf) +
                   " but the file holds " + std::to_string(mesh.vertices.size()) + " " + std::to_string(seen_e) + " " +
                   std::to_string(mesh.num_faces()));
+  // The format lists every edge, triangle sides included: those that bound no triangle are the
+  // axis's 1-D edges.
+  std::set<std::pair<int, int>> sides;
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
+    for (int i = 0; i < 3; ++i) {
+      const int a = mesh.face(f)[i], b = mesh.face(f)[(i + 1) % 3];
+      sides.emplace(std::min(a, b), std::max(a, b));
+    }
+  for (const auto& e : e_lines)
+    if (!sides.count({std::min(e[0], e[1]), std::max(e[0], e[1])})) {
+      mesh.edges.push_back(e);
+      mesh.edge_solid.push_back(0);
+    }
   return mesh;
 }
 

@@ -225,7 +225,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       ss.dropped_faces = ms.dropped_faces;
       ss.components = ms.components;
       ss.filler_faces = ms.filler_faces;
-      ss.bare_edges = ms.bare_edges;
+      ss.edges = ms.bare_edges;
       ss.unattached_faces = ms.unattached_faces;
       ss.euler_characteristic = ms.euler_characteristic;
       ss.exact_inside_tests = ms.exact_inside_tests;
@@ -240,6 +240,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
   }
   stats.vertices = result.mesh.num_vertices();
   stats.faces = result.mesh.num_faces();
+  stats.edges = result.mesh.num_edges();
   report(progress, "done", 1.0);
   stats.timings.push_back({"total", seconds_since(t_total)});
   stats.peak_rss_mb = peak_rss_mb();

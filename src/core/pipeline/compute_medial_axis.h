@@ -24,7 +24,7 @@ struct SolidStats {
   std::size_t dropped_faces = 0;   ///< selected faces outside the solid or in stray pieces
   std::size_t components = 0;      ///< pieces of the inner axis before stray ones were dropped
   std::size_t filler_faces = 0;    ///< unselected Voronoi facets kept for the axis's topology
-  std::size_t bare_edges = 0;      ///< 1-D parts of the axis that no output face carries
+  std::size_t edges = 0;           ///< output edges: 1-D parts of the axis that no face carries
   std::size_t unattached_faces = 0;  ///< completion triangles left out because they would close a loop
   long euler_characteristic = 0;   ///< V - E + F of the output; the solid's when the topology is right
   std::size_t exact_inside_tests = 0;  ///< Voronoi vertices the B-rep classifier had to settle
@@ -35,6 +35,7 @@ struct ComputeStats {
   std::size_t samples = 0;
   std::size_t vertices = 0;
   std::size_t faces = 0;
+  std::size_t edges = 0;          ///< 1-D edges of the output mesh (MedialMesh::edges)
   std::vector<SolidStats> solids;
   Timings timings;                ///< per stage, plus "total"; includes "delaunay"
   double peak_rss_mb = 0.0;
@@ -62,7 +63,8 @@ SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& para
 ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams& params,
                                   const Progress& progress = {});
 
-/// JSON object with samples, vertices, faces, spacing, timings {stage: seconds}, peak_rss_mb, solids.
+/// JSON object with samples, vertices, faces, edges, spacing, timings {stage: seconds}, peak_rss_mb,
+/// solids.
 std::string stats_to_json(const ComputeStats& stats);
 
 /// Peak resident set size of this process so far, MiB.

@@ -49,6 +49,7 @@ std::string stats_to_json(const ComputeStats& stats) {
   j += "  \"samples\": " + std::to_string(stats.samples) + ",\n";
   j += "  \"vertices\": " + std::to_string(stats.vertices) + ",\n";
   j += "  \"faces\": " + std::to_string(stats.faces) + ",\n";
+  j += "  \"edges\": " + std::to_string(stats.edges) + ",\n";
   j += "  \"spacing\": " + number(stats.spacing) + ",\n";
   j += "  \"timings\": {";
   for (std::size_t i = 0; i < stats.timings.size(); ++i)
@@ -69,7 +70,7 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"dropped_faces\": " + std::to_string(s.dropped_faces);
     j += ", \"components\": " + std::to_string(s.components);
     j += ", \"filler_faces\": " + std::to_string(s.filler_faces);
-    j += ", \"bare_edges\": " + std::to_string(s.bare_edges);
+    j += ", \"edges\": " + std::to_string(s.edges);
     j += ", \"unattached_faces\": " + std::to_string(s.unattached_faces);
     j += ", \"euler_characteristic\": " + std::to_string(s.euler_characteristic);
     j += ", \"exact_inside_tests\": " + std::to_string(s.exact_inside_tests);

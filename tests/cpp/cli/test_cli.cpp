@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
@@ -216,6 +217,30 @@ TEST(Cli, ComputeWritesAMeshInsideTheCubeAndValidStats) {
   std::vector<std::string> names = dir.entries();
   std::sort(names.begin(), names.end());
   EXPECT_EQ(names, (std::vector<std::string>{"box.brep", "cube.json", "cube.ply"}));
+}
+
+// The summary line counts what the file holds; edges are named only when there are some.
+TEST(Cli, SummaryCountsTheEdgesOfTheOutputWhenThereAreAny) {
+  TempDir dir;
+  const std::string torus = dir.file("torus.brep");
+  BRepTools::Write(BRepPrimAPI_MakeTorus(10, 3).Shape(), torus.c_str());
+  for (const std::string& input : {torus, box_brep(dir)}) {
+    const std::string output = dir.file("out.ply");
+    const CliRun r = run(dir, {"compute", input, "-o", output, "--samples", "1500", "--quiet"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const MedialMesh m = read_medial_mesh(output);
+    const std::string counts = "medial mesh of " + std::to_string(m.num_vertices()) + " vertices";
+    const std::string expected =
+        m.num_edges() == 0
+            ? counts + " and " + std::to_string(m.num_faces()) + " faces in "
+            : counts + ", " + std::to_string(m.num_faces()) + " faces and " + std::to_string(m.num_edges()) +
+                  (m.num_edges() == 1 ? " edge in " : " edges in ");
+    EXPECT_NE(r.out.find(expected), std::string::npos) << "expected: " << expected << "\nout: " << r.out;
+    // The torus's core circle is where the axis is a curve: without an edge there, this test
+    // would not see the summary's edge count.
+    if (input == torus) EXPECT_GT(m.num_edges(), 0u) << "the torus's medial mesh has no 1-D edge";
+    else EXPECT_EQ(m.num_edges(), 0u) << "a box's medial axis is all faces";
+  }
 }
 
 TEST(Cli, ProgressIsALinePerStageChangeNotAFlood) {

@@ -9,6 +9,7 @@
 #include <GProp_GProps.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Iterator.hxx>
 
 #include <sstream>
 
@@ -109,6 +110,61 @@ TEST(MedialMeshToBrep, GridSharesEveryVertexAndEdge) {
   EXPECT_EQ(count(shape, TopAbs_EDGE), 2 * n * (n + 1));
   EXPECT_NEAR(area(shape), n * n * std::sqrt(1.01), 1e-6);
   EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+}
+
+double length(const TopoDS_Shape& s) {
+  GProp_GProps props;
+  BRepGProp::LinearProperties(s, props);
+  return props.Mass();
+}
+
+// Shapes directly in the compound, by type.
+int children(const TopoDS_Shape& s, TopAbs_ShapeEnum type) {
+  int n = 0;
+  for (TopoDS_Iterator it(s); it.More(); it.Next()) n += it.Value().ShapeType() == type;
+  return n;
+}
+
+TEST(MedialMeshToBrep, EdgesBecomeFreeEdgesSharingTheFacesVertices) {
+  MedialMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 2}, {0, 0, 0}};
+  m.radius.assign(5, 1.0);
+  m.add_face({0, 1, 2}, FaceKind::Voronoi, 0);
+  m.edges = {{0, 3}, {1, 0}, {4, 0}};  // dangling, of length 2; a side of the triangle; zero length
+  m.edge_solid = {0, 0, 0};
+  const TopoDS_Shape shape = parse(medial_mesh_to_brep(m));
+  EXPECT_EQ(children(shape, TopAbs_FACE), 1);
+  EXPECT_EQ(children(shape, TopAbs_EDGE), 1);  // the side is in the face already; no zero-length edge
+  EXPECT_EQ(count(shape, TopAbs_EDGE), 4);
+  EXPECT_EQ(count(shape, TopAbs_VERTEX), 4);  // vertex 0 is shared by the face and the edge
+  // The three sides of the triangle and the dangling edge.
+  EXPECT_NEAR(length(shape), 2.0 + std::sqrt(2.0) + 2.0, 1e-12);
+  EXPECT_NEAR(area(shape), 0.5, 1e-12);
+  EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+}
+
+TEST(MedialMeshToBrep, MeshOfEdgesOnlyIsAClosedPolygonOfEdges) {
+  MedialMesh m;
+  m.vertices = {{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+  m.radius.assign(4, 1.0);
+  m.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  m.edge_solid.assign(4, 0);
+  const TopoDS_Shape shape = parse(medial_mesh_to_brep(m));
+  ASSERT_FALSE(shape.IsNull());
+  EXPECT_EQ(shape.ShapeType(), TopAbs_COMPOUND);
+  EXPECT_EQ(count(shape, TopAbs_FACE), 0);
+  EXPECT_EQ(children(shape, TopAbs_EDGE), 4);
+  EXPECT_EQ(count(shape, TopAbs_VERTEX), 4);
+  EXPECT_NEAR(length(shape), 4 * std::sqrt(2.0), 1e-12);
+}
+
+TEST(MedialMeshToBrep, EdgeIndexOutOfRangeIsRefused) {
+  MedialMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}};
+  m.radius = {1, 1};
+  m.edges = {{0, 2}};
+  m.edge_solid = {0};
+  EXPECT_THROW(medial_mesh_to_brep(m), InvalidInput);
 }
 
 TEST(MedialMeshToBrep, IndexOutOfRangeIsRefused) {

@@ -15,7 +15,6 @@ inline bool known_weakness(const std::string& test, const std::string& name) {
       // centre line), the Voronoi facets that approximate it form a thin cloud of fins whose
       // small loops change V - E + F (the paper, section 5: such parts are "approximated by thin
       // Voronoi facets"). Needs a topology-preserving clean-up of the fins.
-      {"Euler", "Torus"},
       {"Euler", "FreecadYRodMount"},
       {"Euler", "NistFtc11"},
       // At 15,000 samples (h = 7.6 on a part 154 long) the axis breaks in two across a region

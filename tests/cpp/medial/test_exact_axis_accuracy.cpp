@@ -121,6 +121,14 @@ TEST_P(ExactMedialAxis, EveryFaceBelongsToSolidZero) {
   EXPECT_EQ(wrong, 0) << c().name << ": faces with a solid index other than 0";
 }
 
+TEST_P(ExactMedialAxis, EveryEdgeBelongsToSolidZero) {
+  const MedialMesh* m = mesh();
+  if (!m) return;
+  const auto wrong = std::count_if(m->edge_solid.begin(), m->edge_solid.end(), [](int s) { return s != 0; });
+  EXPECT_EQ(m->edge_solid.size(), m->num_edges());
+  EXPECT_EQ(wrong, 0) << c().name << ": 1-D edges with a solid index other than 0";
+}
+
 TEST_P(ExactMedialAxis, TheEulerCharacteristicIsTheSolids) {
   const MedialMesh* m = mesh();
   if (!m) return;

@@ -17,14 +17,17 @@ ComputeStats sample_stats() {
   s.samples = 1234;
   s.vertices = 567;
   s.faces = 89;
+  s.edges = 5;
   s.timings = {{"features", 0.5}, {"sampling", 1.25}, {"delaunay", 2.0}, {"total", 3.75}};
   s.peak_rss_mb = 42.5;
   SolidStats a;
   a.samples = 1000;
   a.convex_edges = 12;
+  a.edges = 4;
   SolidStats b;
   b.samples = 234;
   b.dropped_faces = 3;
+  b.edges = 1;
   s.solids = {a, b};
   return s;
 }
@@ -39,6 +42,10 @@ TEST(StatsToJson, HoldsTheFiguresAndTimingsInOrder) {
   EXPECT_NE(j.find("\"peak_rss_mb\": 42.5"), std::string::npos) << j;
   EXPECT_NE(j.find("\"convex_edges\": 12"), std::string::npos) << j;
   EXPECT_NE(j.find("\"dropped_faces\": 3"), std::string::npos) << j;
+  // Top level: edges right after faces.
+  EXPECT_NE(j.find("  \"faces\": 89,\n  \"edges\": 5,\n"), std::string::npos) << j;
+  EXPECT_NE(j.find(", \"edges\": 4,"), std::string::npos) << j;
+  EXPECT_NE(j.find(", \"edges\": 1,"), std::string::npos) << j;
 }
 
 // Parsed by Python's json module, the strictest parser at hand: the document is valid JSON even
@@ -54,6 +61,9 @@ TEST(StatsToJson, IsValidJson) {
       "/usr/bin/python3 -c 'import json,sys\n"
       "d = json.load(open(sys.argv[1]))\n"
       "assert d[\"samples\"] == 1234 and len(d[\"solids\"]) == 2\n"
+      "assert (d[\"faces\"], d[\"edges\"]) == (89, 5)\n"
+      "assert [s[\"edges\"] for s in d[\"solids\"]] == [4, 1]\n"
+      "assert all(\"bare_edges\" not in s for s in d[\"solids\"])\n"
       "assert list(d[\"timings\"])[:4] == [\"features\", \"sampling\", \"delaunay\", \"total\"]\n"
       "assert d[\"timings\"][\"we\\\"ird\\\\stage\\n\"] is None\n"
       "json.load(open(sys.argv[2]))' " +

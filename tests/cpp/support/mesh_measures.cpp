@@ -1,4 +1,5 @@
 // CGAL first: this file includes no OpenCASCADE header.
+#include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -21,6 +22,9 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Triangle = K::Triangle_3;
 using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<Triangle>::const_iterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+using Segment = K::Segment_3;
+using SegmentPrimitive = CGAL::AABB_segment_primitive<K, std::vector<Segment>::const_iterator>;
+using SegmentTree = CGAL::AABB_tree<CGAL::AABB_traits<K, SegmentPrimitive>>;
 
 struct UnionFind {
   std::vector<int> parent;
@@ -40,12 +44,17 @@ bool in_solid(const MedialMesh& mesh, std::size_t f, int solid) {
   return solid < 0 || (f < mesh.solid.size() && mesh.solid[f] == solid);
 }
 
-// Vertices no face uses: a medial axis that is a point (a sphere's centre) is one such vertex.
-// They carry no solid index, so they count only when all solids are asked for.
+bool edge_in_solid(const MedialMesh& mesh, std::size_t e, int solid) {
+  return solid < 0 || (e < mesh.edge_solid.size() && mesh.edge_solid[e] == solid);
+}
+
+// Vertices no face and no 1-D edge uses: a medial axis that is a point (a sphere's centre) is one
+// such vertex. They carry no solid index, so they count only when all solids are asked for.
 std::vector<int> isolated_vertices(const MedialMesh& mesh, int solid) {
   if (solid >= 0) return {};
   std::vector<char> used(mesh.vertices.size(), 0);
   for (int v : mesh.face_vertices) used[v] = 1;
+  for (const auto& e : mesh.edges) used[e[0]] = used[e[1]] = 1;
   std::vector<int> out;
   for (std::size_t v = 0; v < used.size(); ++v)
     if (!used[v]) out.push_back(static_cast<int>(v));
@@ -57,7 +66,9 @@ std::vector<int> isolated_vertices(const MedialMesh& mesh, int solid) {
 struct MeshDistance::Impl {
   std::vector<Triangle> triangles;
   Tree tree;
-  std::vector<Vec3> points;  // isolated vertices
+  std::vector<Segment> segments;  // 1-D edges
+  SegmentTree segment_tree;
+  std::vector<Vec3> points;  // isolated vertices, and the ends of zero-length 1-D edges
 };
 
 MeshDistance::MeshDistance(const MedialMesh& mesh, double scale, int solid) : impl_(std::make_unique<Impl>()) {
@@ -74,9 +85,18 @@ MeshDistance::MeshDistance(const MedialMesh& mesh, double scale, int solid) : im
       if (CGAL::to_double(t.squared_area()) > min_area2) impl_->triangles.push_back(t);
     }
   }
+  for (std::size_t e = 0; e < mesh.num_edges(); ++e) {
+    if (!edge_in_solid(mesh, e, solid)) continue;
+    const Segment s(point(mesh.edges[e][0]), point(mesh.edges[e][1]));
+    // CGAL's segment distance divides by the length: a point stands for a zero-length edge.
+    if (s.is_degenerate()) impl_->points.push_back(mesh.vertices[mesh.edges[e][0]]);
+    else impl_->segments.push_back(s);
+  }
   for (int v : isolated_vertices(mesh, solid)) impl_->points.push_back(mesh.vertices[v]);
   impl_->tree.insert(impl_->triangles.cbegin(), impl_->triangles.cend());
   if (!impl_->triangles.empty()) impl_->tree.accelerate_distance_queries();
+  impl_->segment_tree.insert(impl_->segments.cbegin(), impl_->segments.cend());
+  if (!impl_->segments.empty()) impl_->segment_tree.accelerate_distance_queries();
 }
 
 MeshDistance::~MeshDistance() = default;
@@ -84,8 +104,11 @@ MeshDistance::~MeshDistance() = default;
 double MeshDistance::distance(const Vec3& p) const {
   double best = std::numeric_limits<double>::infinity();
   for (const Vec3& q : impl_->points) best = std::min(best, norm(p - q));
-  if (impl_->triangles.empty()) return best;
-  return std::min(best, std::sqrt(CGAL::to_double(impl_->tree.squared_distance(K::Point_3(p[0], p[1], p[2])))));
+  const K::Point_3 q(p[0], p[1], p[2]);
+  if (!impl_->triangles.empty()) best = std::min(best, std::sqrt(CGAL::to_double(impl_->tree.squared_distance(q))));
+  if (!impl_->segments.empty())
+    best = std::min(best, std::sqrt(CGAL::to_double(impl_->segment_tree.squared_distance(q))));
+  return best;
 }
 
 std::size_t MeshDistance::num_triangles() const { return impl_->triangles.size(); }
@@ -146,6 +169,8 @@ int connected_pieces(const MedialMesh& mesh, double scale, int solid, std::vecto
     const int* poly = mesh.face(f);
     for (int k = 1; k < mesh.face_size(f); ++k) uf.unite(rep[poly[0]], rep[poly[k]]);
   }
+  for (std::size_t e = 0; e < mesh.num_edges(); ++e)
+    if (edge_in_solid(mesh, e, solid)) uf.unite(rep[mesh.edges[e][0]], rep[mesh.edges[e][1]]);
   std::unordered_map<int, int> piece_of_root;
   std::vector<int> pieces(mesh.num_faces(), -1);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
@@ -155,6 +180,10 @@ int connected_pieces(const MedialMesh& mesh, double scale, int solid, std::vecto
     pieces[f] = it->second;
   }
   if (face_piece) *face_piece = pieces;
+  // Pieces of 1-D edges alone (a closed curve of edges, say) come after those with faces.
+  for (std::size_t e = 0; e < mesh.num_edges(); ++e)
+    if (edge_in_solid(mesh, e, solid))
+      piece_of_root.emplace(uf.find(rep[mesh.edges[e][0]]), static_cast<int>(piece_of_root.size()));
   std::set<int> lone;
   for (int v : isolated_vertices(mesh, solid))
     if (!piece_of_root.count(uf.find(rep[v]))) lone.insert(uf.find(rep[v]));
@@ -189,6 +218,13 @@ long euler_characteristic(const MedialMesh& mesh, double scale, int solid, int* 
     std::sort(key.begin(), key.end());
     if (std::adjacent_find(key.begin(), key.end()) != key.end()) ++bad;  // pinched polygon
     faces.insert(key);
+  }
+  for (std::size_t e = 0; e < mesh.num_edges(); ++e) {
+    if (!edge_in_solid(mesh, e, solid)) continue;
+    const int a = rep[mesh.edges[e][0]], b = rep[mesh.edges[e][1]];
+    vertices.insert(a);
+    vertices.insert(b);
+    if (a != b) edges.insert({std::min(a, b), std::max(a, b)});  // the set keeps a face side once
   }
   for (int v : isolated_vertices(mesh, solid)) vertices.insert(rep[v]);
   if (degenerate) *degenerate = bad;
