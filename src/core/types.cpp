@@ -1,6 +1,10 @@
 // Small helpers of the shared plain-data types.
 #include "types.h"
 
+#include <algorithm>
+#include <numeric>
+#include <tuple>
+
 namespace cadmedial {
 
 const char* face_kind_name(FaceKind kind) {
@@ -35,6 +39,55 @@ void MedialMesh::append(const MedialMesh& other) {
   solid.insert(solid.end(), other.solid.begin(), other.solid.end());
   for (const auto& e : other.edges) edges.push_back({e[0] + offset, e[1] + offset});
   edge_solid.insert(edge_solid.end(), other.edge_solid.begin(), other.edge_solid.end());
+}
+
+void MedialMesh::sort_canonically() {
+  const std::size_t nv = vertices.size();
+  std::vector<int> order(nv);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return vertices[a] < vertices[b] || (vertices[a] == vertices[b] && radius[a] < radius[b]);
+  });
+  std::vector<int> new_index(nv);
+  for (std::size_t i = 0; i < nv; ++i) new_index[order[i]] = static_cast<int>(i);
+  std::vector<Point3> v2(nv);
+  std::vector<double> r2(nv);
+  for (std::size_t i = 0; i < nv; ++i) v2[i] = vertices[order[i]], r2[i] = radius[order[i]];
+  vertices.swap(v2);
+  radius.swap(r2);
+
+  struct Poly {
+    std::vector<int> corners;
+    FaceKind kind;
+    int solid;
+  };
+  std::vector<Poly> polys(num_faces());
+  for (std::size_t f = 0; f < num_faces(); ++f) {
+    auto& p = polys[f];
+    for (int k = face_start[f]; k < face_start[f + 1]; ++k) p.corners.push_back(new_index[face_vertices[k]]);
+    std::rotate(p.corners.begin(), std::min_element(p.corners.begin(), p.corners.end()), p.corners.end());
+    // Polygons are not oriented (the triangulation's circulators run either way): walk towards
+    // the smaller neighbour.
+    if (p.corners.size() > 2 && p.corners.back() < p.corners[1]) std::reverse(p.corners.begin() + 1, p.corners.end());
+    p.kind = kind[f];
+    p.solid = solid[f];
+  }
+  std::sort(polys.begin(), polys.end(), [](const Poly& a, const Poly& b) {
+    return std::tie(a.solid, a.corners, a.kind) < std::tie(b.solid, b.corners, b.kind);
+  });
+  face_start.assign(1, 0);
+  face_vertices.clear();
+  kind.clear();
+  solid.clear();
+  for (const auto& p : polys) add_face(p.corners, p.kind, p.solid);
+
+  std::vector<std::array<int, 3>> segs(edges.size());
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const int a = new_index[edges[e][0]], b = new_index[edges[e][1]];
+    segs[e] = {edge_solid[e], std::min(a, b), std::max(a, b)};
+  }
+  std::sort(segs.begin(), segs.end());
+  for (std::size_t e = 0; e < segs.size(); ++e) edges[e] = {segs[e][1], segs[e][2]}, edge_solid[e] = segs[e][0];
 }
 
 }  // namespace cadmedial

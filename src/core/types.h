@@ -45,6 +45,10 @@ struct MedialMesh {
   std::size_t add_face(const std::vector<int>& polygon, FaceKind face_kind, int solid_index);
   /// Appends another mesh (its vertices are renumbered).
   void append(const MedialMesh& other);
+  /// Orders vertices by position and faces and edges by their vertices (each polygon starting at
+  /// its smallest vertex, towards its smaller neighbour): the same axis gives the same file,
+  /// whatever order the triangulation visited it in.
+  void sort_canonically();
 };
 
 /// Density of the boundary sample (4.2.1). Exactly one of spacing / target_samples may be set;

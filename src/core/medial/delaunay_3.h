@@ -6,7 +6,9 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -77,7 +79,10 @@ struct MedialComplex {
       const K::Point_3 x = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
                                               c->vertex(2)->point(), c->vertex(3)->point());
       centers.push_back({x.x(), x.y(), x.z()});
-      radii.push_back(std::sqrt(CGAL::squared_distance(x, c->vertex(0)->point())));
+      // The smallest of the four distances: the same whichever vertex CGAL stores first.
+      double r2 = CGAL::squared_distance(x, c->vertex(0)->point());
+      for (int k = 1; k < 4; ++k) r2 = std::min(r2, CGAL::squared_distance(x, c->vertex(k)->point()));
+      radii.push_back(std::sqrt(r2));
     }
     return c->info().id;
   }

@@ -11,6 +11,7 @@
 #include <numeric>
 #include <map>
 #include <set>
+#include <tuple>
 #include <unordered_map>
 
 #include "preserve_topology.h"
@@ -219,7 +220,7 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
   // that depends on memory addresses, so "the first member" would differ from run to run.
   for (size_t id = 0; id < n; ++id) {
     const int r = rep[id];
-    if (r != static_cast<int>(id) && mc.centers[id] < mc.centers[r]) {
+    if (r != static_cast<int>(id) && std::tie(mc.centers[id], mc.radii[id]) < std::tie(mc.centers[r], mc.radii[r])) {
       mc.centers[r] = mc.centers[id];
       mc.radii[r] = mc.radii[id];
     }

@@ -238,6 +238,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
   } catch (const std::bad_alloc&) {
     throw GeometryError("out of memory; use a larger spacing or fewer samples");
   }
+  result.mesh.sort_canonically();
   stats.vertices = result.mesh.num_vertices();
   stats.faces = result.mesh.num_faces();
   stats.edges = result.mesh.num_edges();

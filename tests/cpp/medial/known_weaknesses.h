@@ -17,10 +17,6 @@ inline bool known_weakness(const std::string& test, const std::string& name) {
       // Voronoi facets"). Needs a topology-preserving clean-up of the fins.
       {"Euler", "FreecadYRodMount"},
       {"Euler", "NistFtc11"},
-      // At 15,000 samples (h = 7.6 on a part 154 long) the axis breaks in two across a region
-      // thinner than the spacing; both pieces reach the part's convex edges and are kept. The
-      // spacing does not yet adapt to the local thickness.
-      {"OnePiece", "CaxifSg1"},
       // One vertex of ~20,000 is 0.35 from the axis against 0.33: a fin of the same cloud.
       {"NearAxis", "Cylinder"},
   };
