@@ -43,7 +43,7 @@ inline bool known_weakness(const std::string& test, const std::string& name) {
       // V - E + F = -15 at the default density (h = 0.55 > the rib's 0.5 width: 14 small holes in
       // the rib's sheet) besides the missing sheet under it (above); 0 from h = 0.25 down.
       {"Euler", "TinyRib"},
-      // Where a 3-degree wedge is thinner than about 0.83 h the axis stops: its sharp edge is 3.97
+      // Where a 3-degree wedge is thinner than about h (0.83 to 1.04 h) the axis stops: its edge is 3.97
       // from the output at h = 0.25 (missing length ~ h / tan(angle): 0.72 at 20 degrees, 1.28 at
       // 10, 2.4 at 5); the 4.2.2 completion does not bridge it. V - E + F = 0.
       {"ConvexEdges", "SharpWedge3deg"},
@@ -51,7 +51,7 @@ inline bool known_weakness(const std::string& test, const std::string& name) {
       {"Euler", "SharpWedge3deg"},
       // V - E + F = -4: holes in the bisector sheet of the 30-degree edge within 5 of it (radius
       // up to 1.3); the Voronoi facets alone have them too, and they do not change with theta
-      // (2 to 20) or rho (4 to 1000): not the Angle/Ratio selection. 25, 40 and 45 degrees pass.
+      // (2 to 20) or rho (4 to 1000): not the Angle/Ratio selection. 25 and 45 degrees pass (40: 0).
       {"Euler", "SharpWedge30deg"},
       // A 175-degree convex edge: 14 of its points are 0.48 (2.4 h) from the output (178
       // degrees: 1.10, 179: 2.12); V - E + F = 0, where the Voronoi facets alone give 1: the loop
