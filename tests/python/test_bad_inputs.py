@@ -235,3 +235,14 @@ def test_fuzz_finding_is_refused_without_a_crash(cli, tmp_path, name):
     out.mkdir()
     run = run_cli(cli, "compute", os.path.join(BAD, "fuzz", name), "-o", str(out / "axis.ply"), "--quiet")
     assert_refused(run, "", out)
+
+
+# tests/data/bad/fuzz-slow/: BRepCheck ran for minutes on these; the curve-end check in
+# extract_solids now refuses them first (a regression shows as a timeout here).
+@pytest.mark.parametrize("name", sorted(os.listdir(os.path.join(BAD, "fuzz-slow"))))
+def test_slow_fuzz_input_is_refused_quickly(cli, tmp_path, name):
+    out = tmp_path / "out"
+    out.mkdir()
+    run = subprocess.run([cli, "compute", os.path.join(BAD, "fuzz-slow", name), "-o", str(out / "axis.ply"),
+                          "--quiet"], capture_output=True, text=True, timeout=60)
+    assert_refused(run, "curve", out)

@@ -50,7 +50,9 @@
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ListOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Iterator.hxx>
 #include <TopoDS_Compound.hxx>
@@ -344,8 +346,74 @@ bool sane_curve(Handle(Geom2d_Curve) c) {
   return true;
 }
 
+// ---- curve ends -----------------------------------------------------------------------------
+//
+// BRepCheck_Analyzer refuses an edge whose 3D curve does not end at its vertices (BRepCheck_Vertex:
+// farther than max(vertex, edge tolerance), InvalidPointOnCurve) or whose curve on a face strays
+// from the 3D curve (BRepCheck_Edge: InvalidCurveOnSurface, sampled from end to end). But it checks
+// the wires first, and on mangled BREP (tests/data/bad/fuzz-slow/: a 1e-6 box whose pcurves lie 10
+// away, or whose range became 3) BRepCheck_Wire::SelfIntersect runs for minutes. The same two
+// conditions, at the curve ends only, cost microseconds per edge: refuse on them first. The factor
+// keeps this strictly looser than BRepCheck (it refuses from 1 x the tolerance), so no shape that
+// BRepCheck accepts is refused here.
+constexpr double kEndSlack = 10.0;
+
+std::string short_number(double x) {
+  std::ostringstream s;
+  s.precision(6);
+  s << x;
+  return s.str();
+}
+
+// "" or why edge `e` (numbered `index`) has a curve that does not end where it should; `faces`
+// are the faces that hold it (BRepCheck checks the curves on those faces only).
+std::string curve_end_defect(const TopoDS_Edge& e, int index, const TopTools_ListOfShape& faces) {
+  if (BRep_Tool::Degenerated(e)) return "";
+  double first = 0, last = 0;
+  const Handle(Geom_Curve) curve = BRep_Tool::Curve(e, first, last);  // with the edge's location
+  if (curve.IsNull()) return "";  // BRepCheck refuses an edge without a 3D curve on its own
+  TopoDS_Vertex first_vertex, last_vertex;
+  TopExp::Vertices(TopoDS::Edge(e.Oriented(TopAbs_FORWARD)), first_vertex, last_vertex);
+  double tol = BRep_Tool::Tolerance(e);
+  for (const TopoDS_Vertex& v : {first_vertex, last_vertex})
+    if (!v.IsNull()) tol = std::max(tol, BRep_Tool::Tolerance(v));
+  const double allowed = kEndSlack * tol;
+  const std::string name = "edge " + std::to_string(index);
+
+  const gp_Pnt end3d[2] = {curve->Value(first), curve->Value(last)};
+  const TopoDS_Vertex ends[2] = {first_vertex, last_vertex};
+  for (int k = 0; k < 2; ++k) {
+    if (ends[k].IsNull()) continue;
+    const double d = end3d[k].Distance(BRep_Tool::Pnt(ends[k]));
+    if (!(d <= allowed))
+      return name + "'s curve does not end at its vertex: " + short_number(d) + " away, tolerance " +
+             short_number(tol) + edge_location(e);
+  }
+  // Its curve on each face, at the ends of its own range (the 3D curve's range on a valid edge:
+  // BRepCheck refuses an edge that is not SameRange). A seam has one per orientation.
+  for (TopTools_ListOfShape::Iterator it(faces); it.More(); it.Next()) {
+    const TopoDS_Face face = TopoDS::Face(it.Value());
+    const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);  // with the face's location
+    if (surface.IsNull()) continue;
+    for (TopAbs_Orientation o : {TopAbs_FORWARD, TopAbs_REVERSED}) {
+      double f = 0, l = 0;
+      const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Oriented(o)), face, f, l);
+      if (pc.IsNull()) continue;
+      const double params[2] = {f, l};
+      for (int k = 0; k < 2; ++k) {
+        const gp_Pnt2d uv = pc->Value(params[k]);
+        const double d = surface->Value(uv.X(), uv.Y()).Distance(end3d[k]);
+        if (!(d <= allowed))
+          return name + "'s curve on a face strays from its 3D curve: " + short_number(d) +
+                 " apart at an end, tolerance " + short_number(tol) + edge_location(e);
+      }
+    }
+  }
+  return "";
+}
+
 // Throws InvalidInput naming the first face, edge or vertex (numbered over `shape`) whose geometry
-// is degenerate or not finite.
+// is degenerate or not finite, or whose curves do not meet at their ends (above).
 void check_geometry(const TopoDS_Shape& shape) {
   TopTools_IndexedMapOfShape subs;
   TopExp::MapShapes(shape, TopAbs_VERTEX, subs);
@@ -385,6 +453,22 @@ void check_geometry(const TopoDS_Shape& shape) {
     if (surface.IsNull()) throw InvalidInput("face " + std::to_string(i) + " has no surface");
     if (!sane_surface(surface))
       throw InvalidInput("face " + std::to_string(i) + " has a degenerate surface (a zero axis, or a number that is not finite)");
+  }
+  // Only now that every curve and surface can be evaluated.
+  subs.Clear();
+  TopExp::MapShapes(shape, TopAbs_EDGE, subs);  // the numbering of the messages above
+  TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
+  TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+  for (int i = 1; i <= edge_faces.Extent(); ++i) {
+    const TopoDS_Edge& e = TopoDS::Edge(edge_faces.FindKey(i));
+    std::string why;
+    try {
+      why = curve_end_defect(e, subs.FindIndex(e), edge_faces(i));
+    } catch (const Standard_Failure&) {
+      // A curve this check cannot evaluate (an edge of zero range projected on its plane): BRepCheck
+      // and the shell checks will say what is wrong.
+    }
+    if (!why.empty()) throw InvalidInput(why);
   }
 }
 

@@ -168,6 +168,7 @@ class Sampler {
     const int ne = f_.edges.Extent();
     chains_.assign(ne, {});
     for (int e = 0; e < ne; ++e) {
+      report(progress_, "sampling", 0.1 * e / std::max(1, ne));
       const TopoDS_Edge& edge = TopoDS::Edge(f_.edges(e + 1));
       TopoDS_Vertex va, vb;
       TopExp::Vertices(edge, va, vb);
@@ -269,7 +270,9 @@ class Sampler {
 
   // 4.2.1 triplets: for every sample s on a convex edge, s_l and s_r on the two faces.
   void sample_triplets() {
-    for (int e = 0; e < f_.edges.Extent(); ++e) {
+    const int ne = f_.edges.Extent();
+    for (int e = 0; e < ne; ++e) {
+      report(progress_, "sampling", 0.1 + 0.1 * e / std::max(1, ne));
       const EdgeKind kind = f_.edge_kind[e];
       if (kind != EdgeKind::Convex && kind != EdgeKind::Mixed) continue;
       const auto& chain = chains_[e];
@@ -346,7 +349,6 @@ class Sampler {
     std::mt19937_64 rng(12345);
     std::uniform_real_distribution<double> jitter(-0.35, 0.35);
     for (int fi = 0; fi < nf; ++fi) {
-      report(progress_, "sampling", 0.2 + 0.8 * fi / std::max(1, nf));
       try {
         sample_face(fi, rng, jitter);
       } catch (const Standard_Failure& err) {
@@ -398,7 +400,10 @@ class Sampler {
       nvv = std::max(1L, static_cast<long>(nvv * shrink));
     }
     const double du = (u1 - u0) / nu, dv = (v1 - v0) / nvv;
+    const int nf = f_.faces.Extent();
     for (long i = 0; i < nu; ++i) {
+      // Per row: one face can take seconds (bench/cancel_latency.py), and a cancel must not wait.
+      report(progress_, "sampling", 0.2 + 0.8 * (fi + static_cast<double>(i) / nu) / std::max(1, nf));
       for (long j = 0; j < nvv; ++j) {
         const double u = u0 + du * (i + 0.5 + jitter(rng)), v = v0 + dv * (j + 0.5 + jitter(rng));
         gp_Pnt p;

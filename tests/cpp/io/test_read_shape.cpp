@@ -15,6 +15,8 @@
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom2d_Curve.hxx>
+#include <gp_Vec2d.hxx>
 #include <GProp_GProps.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
@@ -344,13 +346,47 @@ TEST(ExtractSolids, LooseFaceAloneIsRefused) {
 }
 
 TEST(ExtractSolids, BRepCheckFailureNamesTheSubShape) {
-  // Moving a vertex of a box far from its edges' ends, with a tiny tolerance, breaks the B-rep.
+  // Moving a vertex of a box off its edges' ends by 3.7 times its tolerance breaks the B-rep for
+  // BRepCheck (it allows 1 x), and stays under the cheap curve-end check (10 x), which runs first.
+  const TopoDS_Shape shape = BRepPrimAPI_MakeBox(1, 1, 1).Shape();
+  const TopoDS_Vertex v = TopoDS::Vertex(TopExp_Explorer(shape, TopAbs_VERTEX).Current());
+  BRep_Builder().UpdateVertex(v, BRep_Tool::Pnt(v).Translated(gp_Vec(3e-7, 2e-7, 1e-7)), 1e-7);
+  const std::string why = refusal([&] { extract_solids(shape); });
+  EXPECT_CONTAINS(why, "solid 1: ");
+  EXPECT_CONTAINS(why, "is invalid (BRepCheck_");
+}
+
+TEST(ExtractSolids, VertexFarFromItsCurveEndsIsRefusedBeforeBRepCheck) {
   const TopoDS_Shape shape = BRepPrimAPI_MakeBox(1, 1, 1).Shape();
   const TopoDS_Vertex v = TopoDS::Vertex(TopExp_Explorer(shape, TopAbs_VERTEX).Current());
   BRep_Builder().UpdateVertex(v, BRep_Tool::Pnt(v).Translated(gp_Vec(0.3, 0.2, 0.1)), 1e-7);
   const std::string why = refusal([&] { extract_solids(shape); });
-  EXPECT_CONTAINS(why, "solid 1: ");
-  EXPECT_CONTAINS(why, "is invalid (BRepCheck_");
+  EXPECT_CONTAINS(why, "'s curve does not end at its vertex: 0.374166 away, tolerance 1e-07");
+}
+
+TEST(ExtractSolids, CurveOnFaceAwayFromTheEdgeIsRefusedBeforeBRepCheck) {
+  // One edge's curve on one of its faces moved by 0.5 in that face's parameter plane.
+  const TopoDS_Shape shape = BRepPrimAPI_MakeBox(1, 1, 1).Shape();
+  const TopoDS_Face face = TopoDS::Face(TopExp_Explorer(shape, TopAbs_FACE).Current());
+  const TopoDS_Edge edge = TopoDS::Edge(TopExp_Explorer(face, TopAbs_EDGE).Current());
+  double first = 0, last = 0;
+  const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, face, first, last);
+  BRep_Builder().UpdateEdge(edge, Handle(Geom2d_Curve)::DownCast(pc->Translated(gp_Vec2d(0.5, 0))), face, 1e-7);
+  const std::string why = refusal([&] { extract_solids(shape); });
+  EXPECT_CONTAINS(why, "'s curve on a face strays from its 3D curve: 0.5 apart at an end, tolerance 1e-07");
+}
+
+// tests/data/bad/fuzz-slow/: mangled numbers in a 1e-6 box that kept BRepCheck_Wire::SelfIntersect
+// busy for minutes. Refused by the curve-end check in microseconds; the message says which check
+// refused it, so BRepCheck never ran.
+TEST(ExtractSolids, SlowFuzzInputsAreRefusedBeforeBRepCheck) {
+  const std::string dir = std::string(CADMEDIAL_SOURCE_DIR) + "/tests/data/bad/fuzz-slow/";
+  for (const char* name : {"timeout_40e90c94.brep", "timeout_brepcheck_wire_selfintersect.brep", "timeout_d3eedfb5.brep"}) {
+    const std::string why = refusal([&] { extract_solids(read_shape_file(dir + name)); });
+    EXPECT_TRUE(why.find("'s curve does not end at its vertex") != std::string::npos ||
+                why.find("'s curve on a face strays from its 3D curve") != std::string::npos)
+        << name << ": " << why;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,325 @@
+// The engine on hard but valid solids (issue 5): a tiny feature beside a large one at the default
+// density, very sharp and nearly flat edges, tangent-continuous fillets, B-spline faces, plates
+// with tens of through-holes. Facts checked, as in test_shape_medial_axis.cpp: vertices inside,
+// radius = distance to the boundary, convex edges and non-concave corners reached, one piece,
+// Euler characteristic of the solid; for the tiny features, the exact axis inside them and the one
+// joining them to the block (under them) are reached too.
+//
+// Tolerances (derivation in support/exact_cases.h), with h the spacing the engine used
+// (stats.spacing): radius in [D, D + h]; edges and corners within h of the output; inside up to
+// 1e-6 of the bounding-box diagonal; points of a planar sheet of the exact axis within h (a box's
+// sheets: c = 0; under the rib, the bisector of two foot-edge samples a rib width apart and at most
+// h/2 apart along the edges tilts by at most h^2 / (2 w), below h for h < 2 w), of a straight axis
+// equidistant from a circle (a cylinder's, or the one under the boss) within 2.2 h.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepBndLib.hxx>
+#include <Bnd_Box.hxx>
+#include <TopoDS.hxx>
+#include <gp_Pnt.hxx>
+
+#include "core/features/classify_features.h"
+#include "known_weaknesses.h"
+#include "support/engine_run.h"
+#include "support/hard_solids.h"
+#include "support/mesh_measures.h"
+#include "support/shape_measures.h"
+#include "support/solids.h"
+#include "support/summary.h"
+
+namespace cadmedial::test {
+namespace {
+
+/// Points on the exact inner medial axis of a feature the test wants resolved, with the tolerance
+/// in units of h: 1 for a sheet between two parallel planes, 2.2 for a straight axis equidistant
+/// from a circle (support/exact_cases.h).
+struct FeatureAxis {
+  std::function<std::vector<Vec3>()> points;  ///< null: none to check
+  double tolerance_h = 1.0;
+};
+
+struct HardCase {
+  std::string name;
+  std::function<TopoDS_Solid()> make;
+  double spacing;  ///< 0: the engine's default density (SamplingParams::default_target_samples)
+  FeatureAxis inside_feature;  ///< the axis inside a tiny feature
+  FeatureAxis under_feature;   ///< the axis joining it to the rest
+};
+
+// (a) Block 100 x 20 x 10 with a rib 0.5 wide and 3 tall across its top, at x in [49.75, 50.25].
+// Its axis holds the plane x = 50 (i) inside the rib, between its walls, away from its top by more
+// than w/2; (ii) under the rib, inside the block: a point (50, y, z) with 5.5 <= z <= 9.75 and
+// 5 <= y <= 15 is nearest to the rib's two concave foot edges (distance sqrt(w^2/4 + (10 - z)^2)
+// <= 4.51), before the floor (z >= 5.5) and the end faces (y >= 5).
+constexpr double kRibW = 0.5, kRibH = 3.0;
+std::vector<Vec3> inside_rib_points() {
+  std::vector<Vec3> p;
+  for (double y = 1.0; y <= 19.0; y += 0.5)
+    for (double z = 10 + 1.0; z <= 10 + kRibH - kRibW; z += 0.25) p.push_back({50, y, z});
+  return p;
+}
+std::vector<Vec3> under_rib_points() {
+  std::vector<Vec3> p;
+  for (double y = 5.0; y <= 15.0; y += 0.5)
+    for (double z = 5.5; z <= 9.75; z += 0.25) p.push_back({50, y, z});
+  return p;
+}
+// Block 100 x 20 x 10 with a boss of radius 0.5 and height 2 on the centre of its top. Its axis
+// holds the line x = 50, y = 10: (i) inside the boss, from z = 10 + 2r to r below its top (a
+// cylinder's axis); (ii) under the boss, 5.5 <= z <= 9.5, equidistant from the boss's concave foot
+// circle (sqrt(r^2 + (10 - z)^2) < z, and the block's other faces are farther).
+constexpr double kBossR = 0.5, kBossH = 2.0;
+std::vector<Vec3> boss_points() {
+  std::vector<Vec3> p;
+  for (double z = 10 + 2 * kBossR; z <= 10 + kBossH - kBossR + 1e-9; z += 0.1) p.push_back({50, 10, z});
+  return p;
+}
+std::vector<Vec3> under_boss_points() {
+  std::vector<Vec3> p;
+  for (double z = 5.5; z <= 9.5 + 1e-9; z += 0.1) p.push_back({50, 10, z});
+  return p;
+}
+
+const std::vector<HardCase>& hard_cases() {
+  static const std::vector<HardCase> cases{
+      {"TinyRib", [] { return make_block_with_rib(100, 20, 10, kRibW, kRibH); }, 0,
+       {inside_rib_points, 1.0}, {under_rib_points, 1.0}},
+      {"TinyBoss", [] { return make_block_with_boss(100, 20, 10, kBossR, kBossH); }, 0,
+       {boss_points, 2.2}, {under_boss_points, 2.2}},
+      // (b) Wedges of 3 and 30 degrees; a convex edge of 175 degrees; a concave one of 185 degrees.
+      {"SharpWedge3deg", [] { return make_sharp_wedge(3, 40, 8); }, 0.25},
+      {"SharpWedge30deg", [] { return make_sharp_wedge(30, 12, 8); }, 0.25},
+      {"FlatConvexEdge175deg", [] { return make_bent_prism(20, 10, 6, 2.5, true); }, 0.2},
+      {"FlatConcaveEdge185deg", [] { return make_bent_prism(20, 10, 6, 2.5, false); }, 0.2},
+      // (c) Tangent-continuous rounds: every vertical edge of an L-block, and both rims of a hole.
+      {"FilletedLBlock", [] { return make_filleted_l_block(8, 3, 3, 1.0, 0.5); }, 0.15},
+      {"FilletedHole", [] { return make_block_with_filleted_hole(10, 10, 4, 2, 0.5); }, 0.3},
+      // (d) B-spline faces: a loft through three closed B-spline sections; a box with a B-spline top.
+      {"BsplineLoft", [] { return make_bspline_loft(10); }, 0.25},
+      {"BsplineTopBox", [] { return make_box_with_bspline_top(12, 10, 4, 1.5); }, 0.2},
+      // (e) One face with 24 round holes; (f) 30 square through-holes: V - E + F = 1 - holes.
+      {"PlateWith24RoundHoles", [] { return make_plate_with_holes(60, 40, 3, 6, 4, 2.0, false); }, 0.4},
+      {"PlateWith30SquareHoles", [] { return make_plate_with_holes(60, 50, 3, 6, 5, 2.0, true); }, 0.5},
+  };
+  return cases;
+}
+
+class HardInputs : public ::testing::TestWithParam<int> {
+ protected:
+  const HardCase& c() const { return hard_cases()[GetParam()]; }
+
+  // Builds the solid and runs the engine once per case in this process (support/engine_run.h);
+  // false when there is no output to test (the failure is recorded).
+  bool prepare() {
+    solid_ = c().make();
+    ComputeParams params;
+    if (c().spacing > 0) params.sampling.spacing = c().spacing;
+    const auto t0 = std::chrono::steady_clock::now();
+    result_ = &medial_axis_of("hard/" + c().name, [this] { return TopoDS_Shape(solid_); }, params);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    h_ = result_->stats.spacing;
+    diag_ = shape_bbox_diagonal(solid_);
+    // The first test of a case pays for the compute: the figures for the record.
+    if (seconds > 0.01)
+      std::cout << "[ measure  ] " << c().name << ": " << result_->stats.samples << " samples, h = " << h_ << ", "
+                << result_->mesh.num_vertices() << " vertices, " << result_->mesh.num_faces() << " faces, "
+                << seconds << " s\n";
+    EXPECT_GT(h_, 0.0) << c().name << ": stats.spacing not reported";
+    EXPECT_GT(result_->mesh.num_faces(), 0u) << c().name << ": empty output";
+    return result_->mesh.num_faces() > 0 && h_ > 0;
+  }
+  const MedialMesh& mesh() const { return result_->mesh; }
+
+  TopoDS_Solid solid_;
+  const ComputeResult* result_ = nullptr;
+  double h_ = 0, diag_ = 0;
+};
+
+#define PREPARE_OR_RETURN() \
+  if (!prepare()) return
+
+// At most n indices spread evenly over [0, size).
+std::vector<std::size_t> spread(std::size_t size, std::size_t n) {
+  std::vector<std::size_t> idx;
+  const std::size_t step = std::max<std::size_t>(1, size / n);
+  for (std::size_t i = 0; i < size; i += step) idx.push_back(i);
+  return idx;
+}
+
+// Distance from each point to the output, summarized against tolerance tol.
+Summary distances_to_output(const MedialMesh& mesh, double diag, const std::vector<Vec3>& points, double tol) {
+  const MeshDistance surface(mesh, diag);
+  std::vector<double> d;
+  for (const auto& p : points) d.push_back(surface.distance(p));
+  return summarize(d, points, tol);
+}
+
+TEST_P(HardInputs, EveryVertexIsInsideTheSolid) {
+  PREPARE_OR_RETURN();
+  const double tol = 1e-6 * diag_;
+  const SolidClassifier inside(solid_);
+  // The classifier costs milliseconds per point on a part with many faces: a spread subset, but
+  // every vertex against the bounding box (cheap and complete).
+  Bnd_Box box;
+  BRepBndLib::AddOptimal(solid_, box, false, false);
+  box.Enlarge(tol);
+  std::size_t out_of_box = 0;
+  for (const auto& v : mesh().vertices) out_of_box += box.IsOut(gp_Pnt(v[0], v[1], v[2]));
+  EXPECT_EQ(out_of_box, 0u) << c().name << ": vertices outside the bounding box";
+  std::vector<Vec3> outside;
+  const std::vector<std::size_t> tested = spread(mesh().num_vertices(), 600);
+  for (std::size_t v : tested)
+    if (!inside.inside_or_on(mesh().vertices[v], tol)) outside.push_back(mesh().vertices[v]);
+  if (outside.empty()) return;
+  const BoundaryDistance boundary(solid_);
+  std::vector<double> depth;
+  std::vector<Vec3> at;
+  for (std::size_t k = 0; k < std::min<std::size_t>(outside.size(), 50); ++k)
+    depth.push_back(boundary.distance(outside[k])), at.push_back(outside[k]);
+  ADD_FAILURE() << c().name << ": " << outside.size() << " of " << tested.size() << " tested vertices outside (tolerance "
+                << tol << "); distance outside of the first " << depth.size() << ": " << summarize(depth, at, tol).str();
+}
+
+TEST_P(HardInputs, EveryRadiusIsTheDistanceToTheBoundary) {
+  PREPARE_OR_RETURN();
+  const double eps = 1e-6 * diag_;
+  const BoundaryDistance boundary(solid_);
+  std::vector<double> below, above;
+  std::vector<Vec3> at;
+  for (std::size_t v : spread(mesh().num_vertices(), 300)) {
+    const double D = boundary.distance(mesh().vertices[v]);
+    below.push_back(D - mesh().radius[v]);
+    above.push_back(mesh().radius[v] - D);
+    at.push_back(mesh().vertices[v]);
+  }
+  const Summary lo = summarize(below, at, eps), hi = summarize(above, at, h_ + eps);
+  EXPECT_LE(lo.max, eps) << c().name << ": radius smaller than the distance to the boundary by " << lo.str();
+  EXPECT_LE(hi.max, h_ + eps) << c().name << " (h = " << h_ << "): radius larger than the distance by " << hi.str();
+}
+
+TEST_P(HardInputs, EveryConvexEdgeIsReached) {
+  PREPARE_OR_RETURN();
+  const std::vector<Vec3> points = convex_edge_points(classify_features(solid_), h_ / 2);
+  if (points.empty()) GTEST_SKIP() << c().name << " has no convex edge";
+  const Summary s = distances_to_output(mesh(), diag_, points, h_);
+  if (known_weakness("ConvexEdges", c().name) && s.max > h_)
+    GTEST_SKIP() << "known weakness: " << c().name << " (h = " << h_ << "): convex edge point to output " << s.str();
+  EXPECT_LE(s.max, h_) << c().name << " (tolerance h = " << h_ << "): convex edge point to output " << s.str();
+}
+
+TEST_P(HardInputs, EveryNonconcaveCornerIsReached) {
+  PREPARE_OR_RETURN();
+  const std::vector<Vec3> points = nonconcave_corner_points(classify_features(solid_));
+  if (points.empty()) GTEST_SKIP() << c().name << " has no non-concave corner";
+  const Summary s = distances_to_output(mesh(), diag_, points, h_);
+  if (known_weakness("Corners", c().name) && s.max > h_)
+    GTEST_SKIP() << "known weakness: " << c().name << " (h = " << h_ << "): corner to output " << s.str();
+  EXPECT_LE(s.max, h_) << c().name << " (tolerance h = " << h_ << "): corner to output " << s.str();
+}
+
+// Distance from the exact axis points to the output, against the axis's tolerance; `test` keys
+// known_weaknesses.h.
+void check_axis_is_reached(const std::string& test, const HardCase& c, const FeatureAxis& axis, const MedialMesh& mesh,
+                           double h, double diag) {
+  const double tol = axis.tolerance_h * h;
+  const Summary s = distances_to_output(mesh, diag, axis.points(), tol);
+  if (known_weakness(test, c.name) && s.max > tol)
+    GTEST_SKIP() << "known weakness: " << c.name << " (h = " << h << ", tolerance " << tol
+                 << "): exact axis point to output " << s.str();
+  EXPECT_LE(s.max, tol) << c.name << " (h = " << h << ", tolerance " << tol << "): exact axis point to output "
+                        << s.str();
+}
+
+TEST_P(HardInputs, TheAxisInsideTheTinyFeatureIsReached) {
+  if (!c().inside_feature.points) GTEST_SKIP() << c().name << " has no tiny feature";
+  PREPARE_OR_RETURN();
+  check_axis_is_reached("InsideFeature", c(), c().inside_feature, mesh(), h_, diag_);
+}
+
+TEST_P(HardInputs, TheAxisUnderTheTinyFeatureIsReached) {
+  if (!c().under_feature.points) GTEST_SKIP() << c().name << " has no tiny feature";
+  PREPARE_OR_RETURN();
+  check_axis_is_reached("UnderFeature", c(), c().under_feature, mesh(), h_, diag_);
+}
+
+TEST_P(HardInputs, TheOutputIsOnePiece) {
+  PREPARE_OR_RETURN();
+  const int pieces = connected_pieces(mesh(), diag_);
+  if (known_weakness("OnePiece", c().name) && pieces != 1)
+    GTEST_SKIP() << "known weakness: " << c().name << " comes in " << pieces << " pieces";
+  EXPECT_EQ(pieces, 1) << c().name;
+}
+
+TEST_P(HardInputs, TheEulerCharacteristicIsTheSolids) {
+  PREPARE_OR_RETURN();
+  int degenerate = 0;
+  const long chi = euler_characteristic(mesh(), diag_, -1, &degenerate);
+  const long expected = solid_euler_characteristic(solid_);
+  if (known_weakness("Euler", c().name) && chi != expected)
+    GTEST_SKIP() << "known weakness: " << c().name << " V - E + F = " << chi << ", the solid's is " << expected;
+  EXPECT_EQ(chi, expected) << c().name << ": V - E + F of the output (" << degenerate << " degenerate polygons)";
+}
+
+std::vector<int> case_indices() {
+  std::vector<int> v(hard_cases().size());
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<int>(i);
+  return v;
+}
+
+// "Solids/": one ctest entry for the suite (tests/CMakeLists.txt), so each solid is computed once.
+INSTANTIATE_TEST_SUITE_P(Solids, HardInputs, ::testing::ValuesIn(case_indices()),
+                         [](const ::testing::TestParamInfo<int>& info) { return hard_cases()[info.param].name; });
+
+// The solids themselves: the Euler characteristic the engine is held to must be the right one.
+TEST(HardSolids, HoledPlatesHaveEulerCharacteristicOneMinusHoles) {
+  EXPECT_EQ(solid_euler_characteristic(make_plate_with_holes(60, 40, 3, 6, 4, 2.0, false)), 1 - 24);
+  EXPECT_EQ(solid_euler_characteristic(make_plate_with_holes(60, 50, 3, 6, 5, 2.0, true)), 1 - 30);
+  EXPECT_EQ(solid_euler_characteristic(make_block_with_filleted_hole(10, 10, 4, 2, 0.5)), 0);
+}
+
+TEST(HardSolids, SharpAndFlatEdgesAreClassifiedAsBuilt) {
+  // The cases test what they claim: the wedge's edge on the z axis is convex with a 3-degree
+  // dihedral; the bent prisms' edge at (10, 10 +- 0.437) is convex at 175 or concave at 185
+  // degrees, not smooth.
+  struct Expect {
+    TopoDS_Solid solid;
+    double x, y;
+    EdgeKind kind;
+    double dihedral_deg;
+  };
+  const double rise = 10 * std::tan(2.5 * 3.14159265358979323846 / 180);
+  const std::vector<Expect> expected{{make_sharp_wedge(3, 40, 8), 0, 0, EdgeKind::Convex, 3},
+                                     {make_bent_prism(20, 10, 6, 2.5, true), 10, 10 + rise, EdgeKind::Convex, 175},
+                                     {make_bent_prism(20, 10, 6, 2.5, false), 10, 10 - rise, EdgeKind::Concave, 185}};
+  for (const Expect& ex : expected) {
+    const Features f = classify_features(ex.solid);
+    int found = 0;
+    for (int e = 0; e < static_cast<int>(f.edge_kind.size()); ++e) {
+      BRepAdaptor_Curve curve(TopoDS::Edge(f.edges(e + 1)));
+      const double t = 0.5 * (curve.FirstParameter() + curve.LastParameter());
+      const gp_Pnt a = curve.Value(curve.FirstParameter()), b = curve.Value(curve.LastParameter());
+      if (std::hypot(a.X() - ex.x, a.Y() - ex.y) > 1e-9 || std::hypot(b.X() - ex.x, b.Y() - ex.y) > 1e-9) continue;
+      ++found;
+      EXPECT_EQ(f.edge_kind[e], ex.kind) << "edge at (" << ex.x << ", " << ex.y << ")";
+      // The interior angle: 180 - angle between the normals, on the concave side 180 + that.
+      const EdgePoint p = edge_point(f, e, t);
+      const double between = std::acos(std::clamp(p.normal[0].Dot(p.normal[1]), -1.0, 1.0)) * 180 / 3.14159265358979323846;
+      const double dihedral = ex.kind == EdgeKind::Convex ? 180 - between : 180 + between;
+      EXPECT_NEAR(dihedral, ex.dihedral_deg, 1e-6) << "edge at (" << ex.x << ", " << ex.y << ")";
+    }
+    EXPECT_EQ(found, 1) << "vertical edges at (" << ex.x << ", " << ex.y << ")";
+  }
+}
+
+}  // namespace
+}  // namespace cadmedial::test

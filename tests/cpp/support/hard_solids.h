@@ -1,0 +1,49 @@
+// Hard but valid test solids built with OpenCASCADE (issue 5): tiny features beside large ones,
+// very sharp and nearly flat edges, tangent-continuous fillets, B-spline faces, many through-holes.
+// Every builder returns one valid closed solid (checked with BRepCheck_Analyzer;
+// std::runtime_error otherwise). Dimensions are in model units.
+#pragma once
+
+#include <TopoDS_Solid.hxx>
+
+namespace cadmedial::test {
+
+/// The block [0,a] x [0,b] x [0,c] with a rib [a/2 - w/2, a/2 + w/2] x [0,b] x [c, c + rib_height]
+/// on its top (coplanar faces merged): a thin wall across the whole block.
+TopoDS_Solid make_block_with_rib(double a, double b, double c, double w, double rib_height);
+
+/// The block [0,a] x [0,b] x [0,c] with a cylindrical boss of radius r and height boss_height
+/// standing on the centre of its top face.
+TopoDS_Solid make_block_with_boss(double a, double b, double c, double r, double boss_height);
+
+/// The prism over the triangle (0,0) (length,0) (length, length tan(angle)), z in [0, height]:
+/// its edge on the z axis has the dihedral angle `angle_deg`.
+TopoDS_Solid make_sharp_wedge(double angle_deg, double length, double height);
+
+/// The prism over the pentagon (0,0) (a,0) (a,b) (a/2, b + k a/2 tan(bend)) (0,b), z in [0, c],
+/// with k = +1 (convex) or -1 (concave): its vertical edge at x = a/2 has the dihedral angle
+/// 180 - 2 bend (convex) or 180 + 2 bend (concave): nearly flat for a small bend.
+TopoDS_Solid make_bent_prism(double a, double b, double c, double bend_deg, bool convex);
+
+/// make_l_block(a, t, c) of solids.h with its concave vertical edge rounded with radius r_in and
+/// its outer vertical edges rounded with radius r_out (BRepFilletAPI_MakeFillet): every vertical
+/// edge becomes a tangent-continuous round.
+TopoDS_Solid make_filleted_l_block(double a, double t, double c, double r_in, double r_out);
+
+/// make_block_with_hole(a, b, c, r) of solids.h with both rims of the hole rounded with radius
+/// r_fillet (tori meeting the hole and the faces tangentially).
+TopoDS_Solid make_block_with_filleted_hole(double a, double b, double c, double r, double r_fillet);
+
+/// A loft (BRepOffsetAPI_ThruSections, smooth, closed with planar caps) through three
+/// interpolated closed B-spline sections at z = 0, height/2, height: one B-spline side face.
+TopoDS_Solid make_bspline_loft(double height);
+
+/// The block [0,a] x [0,b] x [0, top(x, y)] whose top is one B-spline surface
+/// (GeomAPI_PointsToBSplineSurface) through c + bump sin(pi x / a) sin(pi y / b).
+TopoDS_Solid make_box_with_bspline_top(double a, double b, double c, double bump);
+
+/// The plate [0,a] x [0,b] x [0,c] with nx * ny through-holes along z on a regular grid (pitch
+/// a/nx by b/ny, centred in their cells): round of radius `size` or square of side 2 `size`.
+TopoDS_Solid make_plate_with_holes(double a, double b, double c, int nx, int ny, double size, bool square);
+
+}  // namespace cadmedial::test
