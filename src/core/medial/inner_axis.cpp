@@ -290,7 +290,7 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
 }
 
 std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
-                                       const InsideTest& inside, MedialAxisStats& st) {
+                                       const InsideTest& inside, MedialAxisStats& st, const Progress& progress) {
   const size_t n = mc.cells.size();
   std::vector<std::uint8_t> label(n, 0);
   std::vector<int> unsure;
@@ -307,6 +307,7 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
   const auto [lo, hi] = bounding_box(samples.points);
   const double diag = norm(sub(hi, lo));
   for (size_t id = 0; id < n; ++id) {
+    if (id % 65536 == 0) report(progress, "inner", 0.2 + 0.2 * static_cast<double>(id) / n);
     if (!used[id]) continue;
     const Point3& x = mc.centers[id];
     // Written so that a NaN centre (a flat cell) is beyond too: GMP aborts on NaN in CGAL's
@@ -333,7 +334,9 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
     // goes to the exact B-rep classifier.
     ReconstructionSide mesh(samples, umbrellas);
     std::vector<int> still;
-    for (int id : unsure) {
+    for (size_t k = 0; k < unsure.size(); ++k) {
+      if (k % 16384 == 0) report(progress, "inner", 0.4 + 0.1 * static_cast<double>(k) / unsure.size());
+      const int id = unsure[k];
       std::array<int, 4> near;
       for (int j = 0; j < 4; ++j) near[j] = mc.cells[id]->vertex(j)->info();
       int side = mesh.side_near(mc.centers[id], near);
@@ -345,14 +348,17 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
     }
     unsure.swap(still);
   }
-  if (!unsure.empty()) {
+  // The exact classifier takes about a millisecond per point: in batches, between progress checks.
+  constexpr size_t kBatch = 256;
+  for (size_t b = 0; b < unsure.size(); b += kBatch) {
+    report(progress, "inner", 0.5 + 0.2 * static_cast<double>(b) / unsure.size());
+    const size_t e = std::min(unsure.size(), b + kBatch);
     std::vector<Point3> pts;
-    pts.reserve(unsure.size());
-    for (int id : unsure) pts.push_back(mc.centers[id]);
+    for (size_t k = b; k < e; ++k) pts.push_back(mc.centers[unsure[k]]);
     const std::vector<std::uint8_t> exact = inside(pts);
-    for (size_t k = 0; k < unsure.size(); ++k) label[unsure[k]] = exact[k];
-    st.exact_inside_tests += unsure.size();
+    for (size_t k = b; k < e; ++k) label[unsure[k]] = exact[k - b];
   }
+  st.exact_inside_tests += unsure.size();
   return label;
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "../progress.h"
 #include "../sampling/samples.h"
 #include "delaunay_3.h"
 #include "medial_axis.h"
@@ -17,7 +18,7 @@ namespace cadmedial::internal {
 void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps);
 /// 1 inside, 0 outside, per cell id of mc.
 std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
-                                       const InsideTest& inside, MedialAxisStats& st);
+                                       const InsideTest& inside, MedialAxisStats& st, const Progress& progress);
 /// The faces whose Voronoi vertices are all inside, with the topology of the inner Voronoi complex,
 /// in the pieces kept, as a mesh; segments where facets degenerated to one.
 MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,

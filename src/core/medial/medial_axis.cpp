@@ -44,7 +44,10 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
     using Traits = CGAL::Spatial_sort_traits_adapter_3<K, CGAL::Pointer_property_map<K::Point_3>::type>;
     CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(pts)));
     Vertex hint;
+    std::size_t done = 0;
     for (std::size_t i : order) {
+      // Cancelling must not wait for the whole triangulation (3 s at 250k samples).
+      if (++done % 16384 == 0) report(progress, "delaunay", static_cast<double>(done) / order.size());
       const Vertex v = dt.insert(pts[i], hint == Vertex() ? Cell() : hint->cell());
       // A sample that coincides with another keeps no vertex of its own.
       if (v->info() < 0 || v->info() == static_cast<int>(i)) {
@@ -77,7 +80,9 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
     const auto [lo, hi] = bounding_box(samples.points);
     merge_coincident_cells(dt, mc, 1e-9 * norm(sub(hi, lo)));
   }
-  const std::vector<std::uint8_t> in = label_inside(mc, samples, umbrellas, inside, st);
+  report(progress, "inner", 0.2);
+  const std::vector<std::uint8_t> in = label_inside(mc, samples, umbrellas, inside, st, progress);
+  report(progress, "inner", 0.7);
   MedialMesh mesh = extract_inner(mc, in, samples, solid_index, st);
   st.timings.push_back({"inner", seconds_since(t0)});
   if (stats_out) *stats_out = st;
