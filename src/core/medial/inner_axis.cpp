@@ -366,7 +366,7 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
 // largest connected piece (the inner medial axis of a connected solid is connected, homotopy
 // equivalent to the solid) and any other piece that reaches the boundary.
 MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
-                         int solid_index, MedialAxisStats& st) {
+                         int solid_index, MedialAxisStats& st, const Progress& progress) {
   std::vector<int> inner;
   for (size_t f = 0; f < mc.size(); ++f) {
     bool in = true;
@@ -376,14 +376,19 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
   }
   // The Voronoi part first, its topology repaired; then the completion triangles that keep it,
   // the paper's before the fans that close their rims.
+  report(progress, "inner", 0.72);
   const std::vector<int> fans = fan_completions(mc, inner, inside, st);
+  report(progress, "inner", 0.75);
   std::vector<int> voronoi, completion;
   for (int f : inner) (mc.kind[f] == FaceKind::Voronoi ? voronoi : completion).push_back(f);
   completion.insert(completion.end(), fans.begin(), fans.end());
   std::vector<std::array<int, 3>> segments;
   for (const auto& sg : mc.segments)
     if (inside[sg[0]] && inside[sg[1]]) segments.push_back(sg);
-  const AxisCells cells = attach_by_expansion(mc, collapse_fillers(mc, voronoi, segments, st), completion, st);
+  AxisCells repaired = collapse_fillers(mc, voronoi, segments, st);
+  report(progress, "inner", 0.85);
+  const AxisCells cells = attach_by_expansion(mc, std::move(repaired), completion, st);
+  report(progress, "inner", 0.9);
 
   // Pieces: union-find over faces and edges (items) sharing a corner. A stray piece floats
   // inside; a piece that reaches the boundary (8 or more completion triangles at convex edges and
@@ -424,6 +429,7 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
   for (const auto& [root, p] : piece)
     if (p.second >= 8 && p.first >= best_size / 100) keep.insert(root);
 
+  report(progress, "inner", 0.95);
   MedialMesh mesh;
   AxisCells out;
   NodeMap<int> out_index(mc.cells.size(), samples.size(), -1);

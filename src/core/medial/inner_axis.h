@@ -22,6 +22,6 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
 /// The faces whose Voronoi vertices are all inside, with the topology of the inner Voronoi complex,
 /// in the pieces kept, as a mesh; segments where facets degenerated to one.
 MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
-                         int solid_index, MedialAxisStats& st);
+                         int solid_index, MedialAxisStats& st, const Progress& progress);
 
 }  // namespace cadmedial::internal

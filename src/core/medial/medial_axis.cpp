@@ -83,7 +83,7 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   report(progress, "inner", 0.2);
   const std::vector<std::uint8_t> in = label_inside(mc, samples, umbrellas, inside, st, progress);
   report(progress, "inner", 0.7);
-  MedialMesh mesh = extract_inner(mc, in, samples, solid_index, st);
+  MedialMesh mesh = extract_inner(mc, in, samples, solid_index, st, progress);
   st.timings.push_back({"inner", seconds_since(t0)});
   if (stats_out) *stats_out = st;
   return mesh;

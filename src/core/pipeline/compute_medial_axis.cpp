@@ -238,6 +238,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
   } catch (const std::bad_alloc&) {
     throw GeometryError("out of memory; use a larger spacing or fewer samples");
   }
+  report(progress, "output", 0.0);
   result.mesh.sort_canonically();
   stats.vertices = result.mesh.num_vertices();
   stats.faces = result.mesh.num_faces();
