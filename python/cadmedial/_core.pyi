@@ -55,5 +55,6 @@ def compute_medial_axis(
     theta: float = ...,
     rho: float = ...,
     progress: Optional[Callable[[str, float], Optional[bool]]] = ...,
+    plain_medial: bool = ...,
 ) -> Tuple[MedialMesh, str]: ...
 def peak_rss_mb() -> float: ...
