@@ -30,9 +30,14 @@ MODELS = "/work/shared/data/models"
 
 def fcstd_shape(path):
     """The final solids of a FreeCAD document: its top-level objects (no parent) holding solids
-    (a PartDesign Body's shape is its tip)."""
+    (a PartDesign Body's shape is its tip's; legacy PartDesign: the last feature)."""
+    # FreeCAD creates a "PartDesign::Pad" by importing the Python module "PartDesign", which
+    # exists only inside FreeCAD's own start-up (the compiled module is _PartDesign): without
+    # it, openDocument silently drops every PartDesign object (Body, Pad, Pocket) and only the
+    # sketches and planes are left.
     try:
-        import PartDesign  # noqa: F401 - registers the PartDesign feature types
+        import _PartDesign
+        sys.modules.setdefault("PartDesign", _PartDesign)
     except ImportError:
         pass
     doc = FreeCAD.openDocument(path)
@@ -46,7 +51,13 @@ def fcstd_shape(path):
             continue
         if obj.TypeId in ("App::Origin", "App::Line", "App::Plane") or obj.TypeId.startswith("Sketcher"):
             continue
-        solids.extend(obj.Shape.Solids)
+        found = obj.Shape.Solids
+        tip = getattr(obj, "Tip", None)
+        if not found and tip is not None and hasattr(tip, "Shape"):
+            # A Body saved without its own shape (PartDesignExample.FCStd: up to date, so not
+            # recomputed) holds its solid in its tip feature.
+            found = tip.Shape.Solids
+        solids.extend(found)
     kinds = sorted({o.TypeId for o in doc.Objects})
     FreeCAD.closeDocument(doc.Name)
     if not solids:
