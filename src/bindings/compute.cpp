@@ -1,10 +1,16 @@
 // Shapes, parameters and the pipeline. Long calls release the GIL; the progress callback takes it
 // back to call Python. A Python exception raised in the callback cancels the engine and is then
 // raised again, unchanged, to the caller.
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <BRepClass3d_SolidClassifier.hxx>
 #include <TopAbs_ShapeEnum.hxx>
+#include <gp_Pnt.hxx>
 #include <TopoDS_Shape.hxx>
+
+#include <cstdint>
+#include <sstream>
 
 #include <exception>
 #include <string>
@@ -166,6 +172,38 @@ void bind_compute(py::module_& m) {
       "completion) instead of CAD_MEDIAL; theta is not changed (the paper uses 22.5 for it).\n"
       "progress(stage, fraction) is called with the GIL held; returning a falsy value other than "
       "None raises Cancelled, and an exception it raises cancels the work and propagates.");
+
+  m.def(
+      "classify_points",
+      [](const TopoDS_Shape& shape, const py::array_t<double, py::array::c_style | py::array::forcecast>& points,
+         double tol) {
+        if (shape.IsNull() || shape.ShapeType() != TopAbs_SOLID)
+          throw InvalidInput(std::string("shape must be a solid, got a ") + shape_type_name(shape));
+        if (points.ndim() != 2 || points.shape(1) != 3) {
+          std::ostringstream got;
+          got << "(";
+          for (py::ssize_t i = 0; i < points.ndim(); ++i) got << (i ? ", " : "") << points.shape(i);
+          throw InvalidInput("points must have shape (N, 3), got " + got.str() + (points.ndim() == 1 ? ",)" : ")"));
+        }
+        if (!(tol > 0)) throw InvalidInput("tol must be > 0, got " + std::to_string(tol));
+        auto p = points.unchecked<2>();
+        py::array_t<std::uint8_t> out(points.shape(0));
+        auto o = out.mutable_unchecked<1>();
+        {
+          py::gil_scoped_release release;
+          BRepClass3d_SolidClassifier classifier(shape);
+          for (py::ssize_t i = 0; i < points.shape(0); ++i) {
+            classifier.Perform(gp_Pnt(p(i, 0), p(i, 1), p(i, 2)), tol);
+            const TopAbs_State state = classifier.State();
+            o(i) = state == TopAbs_IN ? 1 : state == TopAbs_ON ? 2 : 0;
+          }
+        }
+        return out;
+      },
+      py::arg("shape"), py::arg("points"), py::arg("tol"),
+      "uint8 array over points (N, 3): 1 inside the solid, 2 on its boundary (within tol), 0 "
+      "outside. OpenCASCADE's solid classifier, built once for all the points (FreeCAD's "
+      "Shape.isInside(p, tol, checkFace) computes the same, building it for every point).");
 
   m.def("peak_rss_mb", &peak_rss_mb, "Peak resident set size of this process so far, MiB.");
 }
