@@ -43,11 +43,14 @@ def sample_triangles(P, T, n, rng, normals=False):
     return Y, float(area.sum())
 
 
-def signed_distance_to_balls(Y, N, C, R, h, k=4):
+def signed_distance_to_balls(Y, N, C, R, h, k=4, bounded=True):
     """e(y) = min_i (|y - c_i| - r_i) over candidate balls: the 8 centres nearest y, and the k
-    centres nearest y + d n and y - d n (n the surface normal at y) for depths d from h/2 to the
-    largest radius in steps of ratio 1.5 (a ball touching y has its centre near y + r n, where n
-    points inwards). Candidate search, so e(y) can only be overestimated (a ball missed)."""
+    centres nearest y + d n and y - d n (n the surface normal at y) within d of that point, for
+    depths d from h/2 to the largest radius in steps of ratio 1.5 (a ball touching y has its
+    centre near y + r n, where n points inwards: within d/2 of y + d n for r in [d, 1.5 d]).
+    Candidate search, so e(y) can only be overestimated (a ball missed). The bound d makes the
+    query on the outer side, where no centre lies, cost almost nothing (the k-d tree prunes it):
+    far from a sheet-like set of centres an unbounded k-nearest query is slow."""
     # Coincident centres (many Voronoi vertices on a cylinder's axis) make k-d queries crawl.
     scale = max(np.abs(C).max(), 1e-12) * 1e-9
     _, keep = np.unique(np.round(np.c_[C, R] / scale), axis=0, return_index=True)
@@ -60,9 +63,17 @@ def signed_distance_to_balls(Y, N, C, R, h, k=4):
     kk = min(k, len(C))
     while d < 1.5 * R.max():
         for sgn in (1.0, -1.0):
-            _, j = tree.query(Y + sgn * d * N, kk)
+            dist, j = tree.query(Y + sgn * d * N, kk, distance_upper_bound=d if bounded else np.inf)
             j = j.reshape(len(Y), -1)
-            best = np.minimum(best, (np.linalg.norm(Y[:, None, :] - C[j], axis=2) - R[j]).min(1))
+            found = np.isfinite(dist.reshape(len(Y), -1)[:, 0])
+            if not found.any():
+                continue
+            jf = j[found]
+            # Missing neighbours come back as index len(C): give them an infinite value.
+            jc = np.minimum(jf, len(C) - 1)
+            val = np.linalg.norm(Y[found][:, None, :] - C[jc], axis=2) - R[jc]
+            val[jf == len(C)] = np.inf
+            best[found] = np.minimum(best[found], val.min(1))
         d *= 1.5
     return best
 
