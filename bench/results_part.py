@@ -125,6 +125,12 @@ def main():
         return
     try:
         t = time.time()
+        source = cadmedial.read_shape(source)
+        # The engine's first read installs OpenCASCADE's fault handlers, which end the process
+        # with status 1 and no word on a fault outside a guarded reader; Python's fault handler,
+        # installed over them, says which signal it was and where first.
+        import faulthandler
+        faulthandler.enable()
         r = cadmedial.compute(source, samples=a.samples, **params)
         rec["wall_compute"] = time.time() - t
     except Exception as e:  # noqa: BLE001
