@@ -93,7 +93,7 @@ def run_part(name, samples, build, tag="", mesh=False, light=False, plain=False,
         how = ("killed by signal %d" % -p.returncode) if p.returncode < 0 else "exit %d" % p.returncode
         # Python's fault handler (results_part.py) names the signal, then the innermost frame.
         fatal = [ln for ln in lines if ln.startswith("Fatal Python error")]
-        where = [ln.strip() for ln in lines if ln.strip().startswith("File ")]
+        where = [ln.strip().replace(ROOT + os.sep, "") for ln in lines if ln.strip().startswith("File ")]
         if fatal:
             what = fatal[0] + (" (%s)" % where[0] if where else "")
         else:
