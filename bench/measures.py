@@ -2,7 +2,8 @@
 
 Approximations (stated again in docs/RESULTS.md):
  * The solid's surface S is a dense random sample of FreeCAD's tessellation (deflection 5e-4 of
-   the bounding-box diagonal, so points are within that of the exact surface).
+   the bounding-box diagonal, so points are within that of the exact surface), face by face,
+   with outward triangle normals.
  * Union of medial balls U = union of B(c_i, r_i) over the output vertices. For a surface point y,
    e(y) = min_i (|y - c_i| - r_i) is the signed distance to U when y is outside U (exact for a
    union of balls). Candidates: the 8 centres nearest y and the 4 nearest y +- d n
@@ -21,10 +22,32 @@ from scipy.spatial import cKDTree
 
 
 def tessellate(shape, diag):
-    pts, tris = shape.tessellate(5e-4 * diag)
-    P = np.array([[p.x, p.y, p.z] for p in pts], float)
-    T = np.array(tris, int).reshape(-1, 3)
-    return P, T
+    """(P (n,3), T (m,3), oriented): FreeCAD's tessellation face by face, each face's triangles
+    turned so that their normals agree with the face's outward normal (Face.normalAt) at the
+    centroid of its largest triangle; oriented is False when some face could not be checked."""
+    Ps, Ts, off, oriented = [], [], 0, True
+    for face in shape.Faces:
+        pts, tris = face.tessellate(5e-4 * diag)
+        if not tris:
+            continue
+        p = np.array([[q.x, q.y, q.z] for q in pts], float)
+        t = np.array(tris, int).reshape(-1, 3)
+        n = np.cross(p[t[:, 1]] - p[t[:, 0]], p[t[:, 2]] - p[t[:, 0]])
+        k = int(np.argmax(np.einsum("ij,ij->i", n, n)))
+        try:
+            from FreeCAD import Vector
+            u, v = face.Surface.parameter(Vector(*p[t[k]].mean(0)))
+            m = face.normalAt(u, v)
+            if n[k] @ np.array([m.x, m.y, m.z]) < 0:
+                t = t[:, ::-1]
+        except Exception:  # noqa: BLE001 - a face without a normal there: orientation unknown
+            oriented = False
+        Ps.append(p)
+        Ts.append(t + off)
+        off += len(p)
+    if not Ps:
+        return np.zeros((0, 3)), np.zeros((0, 3), int), False
+    return np.vstack(Ps), np.vstack(Ts), oriented
 
 
 def sample_triangles(P, T, n, rng, normals=False):
@@ -43,11 +66,14 @@ def sample_triangles(P, T, n, rng, normals=False):
     return Y, float(area.sum())
 
 
-def signed_distance_to_balls(Y, N, C, R, h, k=4):
+def signed_distance_to_balls(Y, N, C, R, h, k=4, bounded=True):
     """e(y) = min_i (|y - c_i| - r_i) over candidate balls: the 8 centres nearest y, and the k
-    centres nearest y + d n and y - d n (n the surface normal at y) for depths d from h/2 to the
-    largest radius in steps of ratio 1.5 (a ball touching y has its centre near y + r n, where n
-    points inwards). Candidate search, so e(y) can only be overestimated (a ball missed)."""
+    centres nearest y + d n and y - d n (n the surface normal at y) within d of that point, for
+    depths d from h/2 to the largest radius in steps of ratio 1.5 (a ball touching y has its
+    centre near y + r n, where n points inwards: within d/2 of y + d n for r in [d, 1.5 d]).
+    Candidate search, so e(y) can only be overestimated (a ball missed). The bound d makes the
+    query on the outer side, where no centre lies, cost almost nothing (the k-d tree prunes it):
+    far from a sheet-like set of centres an unbounded k-nearest query is slow."""
     # Coincident centres (many Voronoi vertices on a cylinder's axis) make k-d queries crawl.
     scale = max(np.abs(C).max(), 1e-12) * 1e-9
     _, keep = np.unique(np.round(np.c_[C, R] / scale), axis=0, return_index=True)
@@ -60,16 +86,24 @@ def signed_distance_to_balls(Y, N, C, R, h, k=4):
     kk = min(k, len(C))
     while d < 1.5 * R.max():
         for sgn in (1.0, -1.0):
-            _, j = tree.query(Y + sgn * d * N, kk)
+            dist, j = tree.query(Y + sgn * d * N, kk, distance_upper_bound=d if bounded else np.inf)
             j = j.reshape(len(Y), -1)
-            best = np.minimum(best, (np.linalg.norm(Y[:, None, :] - C[j], axis=2) - R[j]).min(1))
+            found = np.isfinite(dist.reshape(len(Y), -1)[:, 0])
+            if not found.any():
+                continue
+            jf = j[found]
+            # Missing neighbours come back as index len(C): give them an infinite value.
+            jc = np.minimum(jf, len(C) - 1)
+            val = np.linalg.norm(Y[found][:, None, :] - C[jc], axis=2) - R[jc]
+            val[jf == len(C)] = np.inf
+            best[found] = np.minimum(best[found], val.min(1))
         d *= 1.5
     return best
 
 
 def reconstruction_error(shape, diag, V, R, h, n_surface=30_000, seed=0):
     rng = np.random.default_rng(seed)
-    P, T = tessellate(shape, diag)
+    P, T, oriented = tessellate(shape, diag)
     Y, area, N = sample_triangles(P, T, n_surface, rng, normals=True)
     spacing = np.sqrt(area / n_surface)
     e = signed_distance_to_balls(Y, N, V, R, h)
@@ -82,6 +116,8 @@ def reconstruction_error(shape, diag, V, R, h, n_surface=30_000, seed=0):
     stick_max = max(float(stick.max()), 0.0)
     to_boundary = float(e_abs.max())
     return {
+        # Outward normals when every face's triangles could be oriented, else None.
+        "surface": (Y, N if oriented else None, spacing),
         "surface_points": n_surface,
         "surface_sample_spacing": float(spacing),
         "uncovered_max": uncovered,
@@ -151,32 +187,76 @@ def solid_euler(solid):
     return (V - E + F) // 2
 
 
-def leakage(solid_shapes, V, tol, n=1500, seed=0):
+def classify(solids, points, tol):
+    """Per solid (FreeCAD Part solids), a uint8 array over the points: 1 inside, 2 on the boundary
+    (within tol), 0 outside. OpenCASCADE's solid classifier, built once per solid
+    (cadmedial._core.classify_points: what Shape.isInside(p, tol, checkFace) computes, but
+    isInside builds the classifier again for every point); points outside a solid's bounding
+    box are outside it without a query."""
+    import cadmedial
+    from cadmedial import _core
+    points = np.asarray(points, float).reshape(-1, 3)
+    out = []
+    for solid in solids:
+        bb = solid.BoundBox
+        lo = np.array([bb.XMin, bb.YMin, bb.ZMin]) - tol
+        hi = np.array([bb.XMax, bb.YMax, bb.ZMax]) + tol
+        near = ((points >= lo) & (points <= hi)).all(1)
+        state = np.zeros(len(points), np.uint8)
+        if near.any():
+            state[near] = _core.classify_points(cadmedial.read_shape(solid), points[near], tol)
+        out.append(state)
+    return out
+
+
+def side_from_surface(X, Y, N_out, spacing):
+    """Per point: 1 inside, 0 outside, -1 undecided, from the 3 surface samples y nearest it:
+    decided only when the point x is farther than 3 sample spacings from all of them (the
+    tessellation is within 5e-4 of the diagonal of the surface, far less), x - y is within 60
+    degrees of the normal at every y (x faces those tangent planes, it is not beside them, off an
+    edge the samples missed), and all three agree on the side."""
+    d, j = cKDTree(Y, balanced_tree=False, compact_nodes=False).query(X, 3)
+    side = np.einsum("ijk,ijk->ij", X[:, None, :] - Y[j], N_out[j])
+    facing = (np.abs(side) >= 0.5 * d).all(1)
+    out = np.full(len(X), -1, int)
+    ok = (d[:, 0] > 3 * spacing) & facing
+    out[ok & (side < 0).all(1)] = 1
+    out[ok & (side > 0).all(1)] = 0
+    return out
+
+
+def leakage(solid_shapes, V, tol, n=1500, seed=0, surface=None):
+    """(share of n random vertices outside every solid, n, how many OpenCASCADE's classifier
+    settled). surface = (Y, N_out, spacing) of a single solid: vertices far from it are settled by
+    side_from_surface, the others by the classifier (on the boundary counts as inside)."""
     rng = np.random.default_rng(seed)
     idx = rng.choice(len(V), min(n, len(V)), replace=False)
-    from FreeCAD import Vector
-    outside = 0
-    for i in idx:
-        p = Vector(*V[i])
-        if not any(s.BoundBox.isInside(p) and s.isInside(p, tol, True) for s in solid_shapes):
-            outside += 1
-    return outside / len(idx), len(idx)
+    X = V[idx]
+    state = np.full(len(X), -1, int)
+    if surface is not None and len(solid_shapes) == 1:
+        state = side_from_surface(X, *surface)
+    todo = state < 0
+    if todo.any():
+        inside = [st > 0 for st in classify(solid_shapes, X[todo], tol)]
+        state[todo] = np.logical_or.reduce(inside).astype(int) if inside else 0
+    return float((state == 0).mean()), len(idx), int(todo.sum())
 
 
 def convex_edge_points(solids, h, angle_deg=10.0):
     """Points every <= h/2 along the convex edges of the B-rep (dihedral turn > angle_deg) and
     the non-concave corners (a vertex with an incident convex edge), with the edges' total length.
 
-    Convexity at a point p of an edge between faces with outward normals n1, n2: the point
-    p + eps (n2 - n1) is outside the solid for a convex edge, inside for a concave one."""
-    from FreeCAD import Vector
+    Convexity at the midpoint p of an edge between faces with outward normals n1, n2: the point
+    p + eps (n2 - n1) is outside the solid for a convex edge, inside for a concave one (all the
+    edges' probes classified in one batch)."""
     pts, corners, length = [], [], 0.0
     for solid in solids:
         edge_faces = {}
         for fi, f in enumerate(solid.Faces):
             for e in f.Edges:
                 edge_faces.setdefault(e.hashCode(), []).append((fi, f))
-        conv_vertices = set()
+        eps = 1e-3 * max(h, 1e-9)
+        cand = []  # (edge, params, probe)
         for e in solid.Edges:
             if e.Degenerated:
                 continue
@@ -198,11 +278,18 @@ def convex_edge_points(solids, h, angle_deg=10.0):
                 continue
             if n[0].getAngle(n[1]) < np.radians(angle_deg):
                 continue
-            eps = 1e-3 * max(h, 1e-9)
             q = mid + (n[1] - n[0]) * eps
-            if solid.isInside(q, 1e-9, False):
-                continue  # concave
-            length += L
+            cand.append((e, params, (q.x, q.y, q.z)))
+        if not cand:
+            continue
+        # Concave when q is strictly inside; q on the boundary (another face passes there: two
+        # such probes on nist_ctc_04) counts as convex, as isInside(q, 1e-9, False) did.
+        concave = classify([solid], [c[2] for c in cand], 1e-9)[0] == 1
+        conv_vertices = set()
+        for (e, params, _), is_concave in zip(cand, concave):
+            if is_concave:
+                continue
+            length += e.Length
             pts.extend([[p.x, p.y, p.z] for p in (e.valueAt(t) for t in params)])
             for vx in e.Vertexes:
                 conv_vertices.add((round(vx.X, 9), round(vx.Y, 9), round(vx.Z, 9)))

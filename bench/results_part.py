@@ -1,11 +1,12 @@
 """One part of the results suite (run by bench/results.py in a subprocess, one per part).
 
-    results_part.py NAME --samples N --out FILE.json [--mesh FILE.npz] [--light]
+    results_part.py NAME --samples N --out FILE.json [--mesh FILE.npz] [--light] [--plain-medial]
 
 NAME is an analytic solid (bench/analytic.py NAMES) or a path under /work/shared/data/models.
 Writes a JSON record: engine stats, reconstruction error, accuracy (analytic solids), completeness,
 topology, leakage; or {"refused": message} when the engine or the reader refuses the part.
---light skips topology and leakage (density sweeps).
+--light skips topology and leakage (density sweeps). --plain-medial computes the paper's plain
+MEDIAL (section 3) with its theta = pi/8 (22.5 degrees) instead of CAD_MEDIAL, on the same samples.
 """
 import argparse
 import json
@@ -26,13 +27,19 @@ import analytic  # noqa: E402
 import measures  # noqa: E402
 
 MODELS = "/work/shared/data/models"
+PLAIN_THETA = 22.5  # the paper's pi/8 for MEDIAL (section 3)
 
 
 def fcstd_shape(path):
     """The final solids of a FreeCAD document: its top-level objects (no parent) holding solids
-    (a PartDesign Body's shape is its tip)."""
+    (a PartDesign Body's shape is its tip's; legacy PartDesign: the last feature)."""
+    # FreeCAD creates a "PartDesign::Pad" by importing the Python module "PartDesign", which
+    # exists only inside FreeCAD's own start-up (the compiled module is _PartDesign): without
+    # it, openDocument silently drops every PartDesign object (Body, Pad, Pocket) and only the
+    # sketches and planes are left.
     try:
-        import PartDesign  # noqa: F401 - registers the PartDesign feature types
+        import _PartDesign
+        sys.modules.setdefault("PartDesign", _PartDesign)
     except ImportError:
         pass
     doc = FreeCAD.openDocument(path)
@@ -46,7 +53,13 @@ def fcstd_shape(path):
             continue
         if obj.TypeId in ("App::Origin", "App::Line", "App::Plane") or obj.TypeId.startswith("Sketcher"):
             continue
-        solids.extend(obj.Shape.Solids)
+        found = obj.Shape.Solids
+        tip = getattr(obj, "Tip", None)
+        if not found and tip is not None and hasattr(tip, "Shape"):
+            # A Body saved without its own shape (PartDesignExample.FCStd: up to date, so not
+            # recomputed) holds its solid in its tip feature.
+            found = tip.Shape.Solids
+        solids.extend(found)
     kinds = sorted({o.TypeId for o in doc.Objects})
     FreeCAD.closeDocument(doc.Name)
     if not solids:
@@ -66,7 +79,25 @@ def load(name):
         return s, s
     s = Part.Shape()
     s.read(path)
+    if not s.Solids:
+        # IGES often holds faces only; the engine sews them into solids, and so do the measures.
+        s = sewn_solids(s) or s
     return path, s
+
+
+def sewn_solids(shape):
+    """The closed shells that sewing the shape's faces makes, as solids (a compound), or None."""
+    sewn = shape.copy()
+    sewn.sewShape()
+    solids = []
+    for shell in sewn.Shells:
+        if not shell.isClosed():
+            continue
+        solid = Part.Solid(shell)
+        if solid.Volume < 0:
+            solid.reverse()
+        solids.append(solid)
+    return Part.makeCompound(solids) if solids else None
 
 
 def main():
@@ -79,10 +110,12 @@ def main():
     ap.add_argument("--out", required=True)
     ap.add_argument("--mesh")
     ap.add_argument("--light", action="store_true")
+    ap.add_argument("--plain-medial", action="store_true")
     a = ap.parse_args()
     import cadmedial
 
-    rec = {"name": a.name, "target_samples": a.samples}
+    rec = {"name": a.name, "target_samples": a.samples, "plain_medial": a.plain_medial}
+    params = {"theta": PLAIN_THETA, "plain_medial": True} if a.plain_medial else {}
     t0 = time.time()
     try:
         source, shape = load(a.name)
@@ -92,7 +125,13 @@ def main():
         return
     try:
         t = time.time()
-        r = cadmedial.compute(source, samples=a.samples)
+        source = cadmedial.read_shape(source)
+        # The engine's first read installs OpenCASCADE's fault handlers, which end the process
+        # with status 1 and no word on a fault outside a guarded reader; Python's fault handler,
+        # installed over them, says which signal it was and where first.
+        import faulthandler
+        faulthandler.enable()
+        r = cadmedial.compute(source, samples=a.samples, **params)
         rec["wall_compute"] = time.time() - t
     except Exception as e:  # noqa: BLE001
         rec["refused"] = "%s: %s" % (type(e).__name__, e)
@@ -107,7 +146,8 @@ def main():
     solids = shape.Solids
     bb = shape.BoundBox
     diag = bb.DiagonalLength
-    rec.update(diag=diag, h=h, vertices=len(V), faces=int(r.num_faces), solids=len(solids))
+    rec.update(diag=diag, h=h, vertices=len(V), faces=int(r.num_faces), solids=len(solids),
+               face_kinds=np.bincount(np.asarray(r.face_kind, int), minlength=3).tolist())
     if len(V) == 0:
         rec["refused"] = "empty output"
         json.dump(rec, open(a.out, "w"))
@@ -118,6 +158,7 @@ def main():
     err, (P, T) = measures.reconstruction_error(comp, diag, V, R, h)
     tm["reconstruction_error"] = time.time() - t
     t = time.time()
+    Y, N, spacing = err.pop("surface")
     rec["recon"] = err
     T3 = np.asarray(r.triangles(), np.int64)
     rng = np.random.default_rng(5)
@@ -160,8 +201,9 @@ def main():
             es = measures.solid_euler(solids[s]) if s < len(solids) else None
             per.append({"solid": s, **tp, "solid_euler": es})
         rec["topology"] = per
-        frac, n = measures.leakage(solids, V, 1e-6 * diag)
-        rec["leakage"] = {"outside_fraction": frac, "tested": n}
+        surface = (Y, N, spacing) if N is not None and len(solids) == 1 else None
+        frac, n, exact = measures.leakage(solids, V, 1e-6 * diag, surface=surface)
+        rec["leakage"] = {"outside_fraction": frac, "tested": n, "classifier": exact}
         tm["topology_leakage"] = time.time() - t
     if a.mesh:
         np.savez_compressed(a.mesh, V=V, R=R, T=T3, P=P, Tp=T)

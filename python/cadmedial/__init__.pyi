@@ -69,5 +69,6 @@ def compute(
     theta: float = ...,
     rho: float = ...,
     progress: Optional[ProgressCallback] = ...,
+    plain_medial: bool = ...,
 ) -> MedialAxisResult: ...
 def load(path: Union[str, os.PathLike[str]]) -> MedialAxisResult: ...

@@ -5,6 +5,8 @@ import math
 import os
 from typing import NamedTuple
 
+import numpy as np
+
 from . import _core
 from .result import MedialAxisResult
 
@@ -87,7 +89,16 @@ def plan_sampling(source, spacing=None, samples=None):
     return SamplingPlan(*_core.plan_sampling(read_shape(source), spacing, samples))
 
 
-def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=None):
+def _flag(name, value):
+    """value if it is a bool (numpy's too), else InvalidInput naming the parameter: a string such
+    as "no" would otherwise be read as true."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise _core.InvalidInput("%s must be True or False, got %r" % (name, value))
+
+
+def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=None,
+            plain_medial=False):
     """The inner medial axis of every solid of ``source``.
 
     source    a STEP/IGES/BREP file path, BREP text, a FreeCAD Part.Shape or a _core.Shape
@@ -98,14 +109,19 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
     progress  None or callable(stage: str, fraction: float); returning False (any falsy value
               but None) cancels and raises Cancelled; an exception it raises cancels the work
               and propagates unchanged. It is called with the GIL held.
+    plain_medial  True runs the paper's plain MEDIAL (section 3: umbrellas from the poles, no
+              convex-edge or corner completion) instead of CAD_MEDIAL, on the same samples, for
+              comparison. Like the program's --plain-medial it leaves theta as given: the paper
+              uses theta=22.5 for MEDIAL.
 
     Returns a MedialAxisResult. Raises InvalidInput (bad file, shape or parameter; also a
     ValueError), GeometryError (a stage failed; also a RuntimeError) or Cancelled.
     """
     shape = read_shape(source)
     spacing, samples = _density(spacing, samples)
+    plain_medial = _flag("plain_medial", plain_medial)
     mesh, stats = _core.compute_medial_axis(shape, spacing, samples, _number("theta", theta),
-                                            _number("rho", rho), progress)
+                                            _number("rho", rho), progress, plain_medial)
     return MedialAxisResult(mesh, json.loads(stats))
 
 

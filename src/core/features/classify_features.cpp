@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Geom2d_Curve.hxx>
 #include <Standard_Failure.hxx>
@@ -33,6 +34,9 @@ const char* edge_kind_name(EdgeKind kind) {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// How far inside a face (a fraction of its parameter range) the normal is taken when the face
+// has none on the edge itself.
+constexpr double kInset = 1e-4;
 
 // The edge as it is traversed by the wires of `face` taken FORWARD: material lies on the left of
 // its pcurve in the parameter plane, whatever the face's own orientation.
@@ -48,7 +52,10 @@ struct FaceSide {
   gp_Pnt2d uv;
 };
 
-FaceSide face_side(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, const gp_Vec& tangent) {
+// `inset` > 0: the normal and the inward direction are taken that far inside the face (a
+// fraction of its parameter range, across the edge), where a collapsed boundary has a normal.
+FaceSide face_side(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, const gp_Vec& tangent,
+                   double inset = 0.0) {
   const TopAbs_Orientation ori = orientation_in_face(edge, face);
   const TopoDS_Face fwd = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
   double first = 0, last = 0;
@@ -67,6 +74,13 @@ FaceSide face_side(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, c
   FaceSide side;
   side.point = p;
   side.uv = uv;
+  if (inset > 0 && left.Magnitude() > 1e-300) {
+    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+    BRepTools::UVBounds(fwd, u0, u1, v0, v1);
+    const gp_Vec2d step = left.Normalized() * (inset * std::max(u1 - u0, v1 - v0));
+    gp_Pnt q;
+    surf.D1(uv.X() + step.X(), uv.Y() + step.Y(), q, su, sv);
+  }
   gp_Vec n = su.Crossed(sv);
   if (n.Magnitude() < 1e-300) throw GeometryError("face normal undefined on edge");
   n.Normalize();
@@ -80,9 +94,7 @@ FaceSide face_side(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, c
   return side;
 }
 
-}  // namespace
-
-EdgePoint edge_point(const Features& features, int edge_index, double t) {
+EdgePoint edge_point_inset(const Features& features, int edge_index, double t, double inset) {
   const TopoDS_Edge& edge = TopoDS::Edge(features.edges(edge_index + 1));
   EdgePoint ep;
   double first = 0, last = 0;
@@ -99,7 +111,7 @@ EdgePoint edge_point(const Features& features, int edge_index, double t) {
   const auto& ef = features.edge_faces[edge_index];
   for (int i = 0; i < 2; ++i) {
     const TopoDS_Face& face = TopoDS::Face(features.faces(ef[i] + 1));
-    FaceSide side = face_side(edge, face, t, ep.tangent);
+    FaceSide side = face_side(edge, face, t, ep.tangent, inset);
     ep.normal[i] = side.normal;
     ep.inward[i] = side.inward;
     ep.uv[i] = side.uv;
@@ -123,7 +135,38 @@ EdgePoint edge_point(const Features& features, int edge_index, double t) {
   return ep;
 }
 
+}  // namespace
+
+EdgePoint edge_point(const Features& features, int edge_index, double t) {
+  return edge_point_inset(features, edge_index, t, 0.0);
+}
+
 namespace {
+
+// Votes of kPoints points along the edge; a point where a face's normal is undefined (the pole of a
+// revolved face, a collapsed B-spline boundary) does not vote.
+struct Votes {
+  int convex = 0, concave = 0, defined = 0;
+};
+
+Votes vote_along(const Features& f, int e, double first, double last, double inset) {
+  // Ends and interior: an edge can change character along its length (a blend that runs out).
+  constexpr int kPoints = 9;
+  Votes votes;
+  for (int i = 0; i < kPoints; ++i) {
+    const double t = first + (last - first) * i / (kPoints - 1);
+    PointKind k;
+    try {
+      k = edge_point_inset(f, e, t, inset).kind;
+    } catch (const GeometryError&) {
+      continue;
+    }
+    ++votes.defined;
+    votes.convex += k == PointKind::Convex;
+    votes.concave += k == PointKind::Concave;
+  }
+  return votes;
+}
 
 EdgeKind classify_edge(const Features& f, int e) {
   const TopoDS_Edge& edge = TopoDS::Edge(f.edges(e + 1));
@@ -131,24 +174,14 @@ EdgeKind classify_edge(const Features& f, int e) {
   if (f.edge_faces[e][0] == f.edge_faces[e][1]) return EdgeKind::Seam;
   double first = 0, last = 0;
   BRep_Tool::Range(edge, first, last);
-  // Ends and interior: an edge can change character along its length (a blend that runs out).
-  constexpr int kPoints = 9;
-  int convex = 0, concave = 0, defined = 0;
-  for (int i = 0; i < kPoints; ++i) {
-    const double t = first + (last - first) * i / (kPoints - 1);
-    PointKind k;
-    try {
-      k = edge_point(f, e, t).kind;
-    } catch (const GeometryError&) {
-      continue;  // a face's normal is undefined here (a collapsed B-spline boundary): no vote
-    }
-    ++defined;
-    convex += k == PointKind::Convex;
-    concave += k == PointKind::Concave;
-  }
-  if (convex == 0 && concave == 0) return EdgeKind::Smooth;
-  if (convex == defined) return EdgeKind::Convex;
-  if (concave == defined) return EdgeKind::Concave;
+  Votes votes = vote_along(f, e, first, last, 0.0);
+  // No point of the edge has both normals (a face collapsed all along it): its character is the
+  // limit of the normals just inside the faces.
+  if (votes.defined == 0) votes = vote_along(f, e, first, last, kInset);
+  // Still none: nothing to tell a feature by; a smooth edge needs no normal downstream.
+  if (votes.convex == 0 && votes.concave == 0) return EdgeKind::Smooth;
+  if (votes.convex == votes.defined) return EdgeKind::Convex;
+  if (votes.concave == votes.defined) return EdgeKind::Concave;
   return EdgeKind::Mixed;
 }
 

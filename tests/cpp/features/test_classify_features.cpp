@@ -5,8 +5,27 @@
 #include <gtest/gtest.h>
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRep_Tool.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <ShapeFix_Solid.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <gp_Ax1.hxx>
+
+#include "core/errors.h"
 
 #include "core/features/classify_features.h"
 #include "support/solids.h"
@@ -216,6 +235,118 @@ TEST(SmoothEdges, RoundedEdgeBoundariesAreSmooth) {
   for (int e = 0; e < f.edges.Extent(); ++e)
     if (std::find(smooth.begin(), smooth.end(), e) == smooth.end())
       EXPECT_EQ(f.edge_kind.at(e), EdgeKind::Convex) << kinds(f);
+}
+
+// Points of edge e (of the 9 that classification looks at) where a face's normal is undefined.
+int undefined_points(const Features& f, int e) {
+  double first = 0, last = 0;
+  BRep_Tool::Range(TopoDS::Edge(f.edges.FindKey(e + 1)), first, last);
+  int n = 0;
+  for (int i = 0; i < 9; ++i) {
+    try {
+      edge_point(f, e, first + (last - first) * i / 8);
+    } catch (const GeometryError&) {
+      ++n;
+    }
+  }
+  return n;
+}
+
+TopoDS_Solid first_solid(const TopoDS_Shape& shape) {
+  TopExp_Explorer ex(shape, TopAbs_SOLID);
+  if (!ex.More()) throw std::runtime_error("no solid");
+  return TopoDS::Solid(ex.Current());
+}
+
+// As in SOT23.igs (FreeCAD's IDF library): a face of revolution whose profile ends on the axis
+// has no normal there (the derivative along the rotation vanishes). Here the quarter "disc"
+// under the B-spline arc (1,0,0) -> (0,0,1), revolved by 90 degrees about z.
+TopoDS_Solid make_revolved_profile_touching_axis() {
+  TColgp_Array1OfPnt poles(1, 3);
+  poles(1) = gp_Pnt(1, 0, 0);
+  poles(2) = gp_Pnt(1, 0, 1);
+  poles(3) = gp_Pnt(0, 0, 1);
+  TColStd_Array1OfReal knots(1, 2);
+  knots(1) = 0;
+  knots(2) = 1;
+  TColStd_Array1OfInteger mults(1, 2);
+  mults(1) = mults(2) = 3;
+  const TopoDS_Edge arc = BRepBuilderAPI_MakeEdge(new Geom_BSplineCurve(poles, knots, mults, 2));
+  const TopoDS_Edge axis = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 1), gp_Pnt(0, 0, 0));
+  const TopoDS_Edge base = BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, 0), gp_Pnt(1, 0, 0));
+  const TopoDS_Face profile = BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(arc, axis, base), Standard_True);
+  return first_solid(BRepPrimAPI_MakeRevol(profile, gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), M_PI / 2));
+}
+
+// The unit cube whose top face is a flat B-spline patch with its first row of poles doubled
+// (y = v^2): the derivative across the edge y = 0, z = 1 vanishes all along it, so the top face
+// has no normal at any point of that edge.
+TopoDS_Solid make_cube_with_collapsed_top_boundary() {
+  TColgp_Array2OfPnt poles(1, 2, 1, 3);
+  for (int i = 1; i <= 2; ++i) {
+    const double x = i - 1;
+    poles(i, 1) = gp_Pnt(x, 0, 1);
+    poles(i, 2) = gp_Pnt(x, 0, 1);
+    poles(i, 3) = gp_Pnt(x, 1, 1);
+  }
+  TColStd_Array1OfReal knots(1, 2);
+  knots(1) = 0;
+  knots(2) = 1;
+  TColStd_Array1OfInteger u_mults(1, 2), v_mults(1, 2);
+  u_mults(1) = u_mults(2) = 2;
+  v_mults(1) = v_mults(2) = 3;
+  BRepBuilderAPI_Sewing sewing(1e-7);
+  sewing.Add(BRepBuilderAPI_MakeFace(new Geom_BSplineSurface(poles, knots, knots, u_mults, v_mults, 1, 2), 1e-7));
+  const auto quad = [&](gp_Pnt a, gp_Pnt b, gp_Pnt c, gp_Pnt d) {
+    sewing.Add(BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakePolygon(a, b, c, d, Standard_True).Wire(), Standard_True));
+  };
+  quad({0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0});
+  quad({0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1});
+  quad({0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1});
+  quad({0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {0, 0, 1});
+  quad({1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1});
+  sewing.Perform();
+  TopExp_Explorer shell(sewing.SewedShape(), TopAbs_SHELL);
+  if (!shell.More()) throw std::runtime_error("the faces do not sew into a shell");
+  ShapeFix_Solid fix(BRepBuilderAPI_MakeSolid(TopoDS::Shell(shell.Current())).Solid());
+  fix.Perform();
+  return first_solid(fix.Shape());
+}
+
+TEST(UndefinedNormals, EdgesEndingAtARevolvedFacesPoleAreConvex) {
+  const TopoDS_Solid solid = make_revolved_profile_touching_axis();
+  ASSERT_TRUE(BRepCheck_Analyzer(solid).IsValid());
+  const Features f = classify_features(solid);  // threw "face normal undefined on edge" before
+  expect_sizes(f);
+  // The two arcs from the equator to the pole (0, 0, 1), in the planes y = 0 and x = 0, where the
+  // revolved face meets a flat side at 90 degrees.
+  const auto arcs = edges_where(f, [](const gp_Pnt& p) {
+    return p.Z() > 0.1 && p.Z() < 0.9 && p.X() + p.Y() > 0.1 && (std::abs(p.X()) < 1e-7 || std::abs(p.Y()) < 1e-7);
+  });
+  ASSERT_EQ(arcs.size(), 2u) << kinds(f);
+  for (int e : arcs) {
+    EXPECT_EQ(undefined_points(f, e), 1) << "edge " << e << ": the face has no normal at the pole only";
+    EXPECT_EQ(f.edge_kind.at(e), EdgeKind::Convex) << kinds(f);
+  }
+  const int pole = vertex_at(f, 0, 0, 1);
+  ASSERT_GE(pole, 0);
+  EXPECT_TRUE(f.nonconcave_corner.at(pole));
+}
+
+TEST(UndefinedNormals, EdgeWithNoNormalAnywhereIsClassifiedFromJustInsideItsFaces) {
+  const TopoDS_Solid solid = make_cube_with_collapsed_top_boundary();
+  ASSERT_TRUE(BRepCheck_Analyzer(solid).IsValid());
+  const Features f = classify_features(solid);
+  expect_sizes(f);
+  ASSERT_EQ(f.edges.Extent(), 12);
+  const auto collapsed = edges_where(f, [](const gp_Pnt& p) {
+    return std::abs(p.Y()) < 1e-7 && std::abs(p.Z() - 1) < 1e-7;
+  });
+  ASSERT_EQ(collapsed.size(), 1u) << kinds(f);
+  EXPECT_EQ(undefined_points(f, collapsed[0]), 9) << "no point of the edge votes";
+  // Still a cube: every edge is convex, every corner non-concave.
+  for (int e = 0; e < 12; ++e) EXPECT_EQ(f.edge_kind.at(e), EdgeKind::Convex) << kinds(f);
+  for (int v = 0; v < f.vertices.Extent(); ++v) EXPECT_TRUE(f.nonconcave_corner.at(v)) << "vertex " << v;
 }
 
 }  // namespace
