@@ -147,26 +147,32 @@ def sample_mesh(V, T, spacing, rng, cap=600_000):
     return np.vstack([V, pts])
 
 
-def topology(offsets, indices, face_solid):
-    """Per solid: connected components and V - E + F of the output mesh (vertices in faces)."""
+def topology(offsets, indices, face_solid, edges=None, edge_solid=None, num_vertices=None):
+    """Per solid: connected components and V - E + F of the output (faces and 1-D edges; an edge
+    that is also a face side counts once)."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
     offsets = np.asarray(offsets, np.int64)
     indices = np.asarray(indices, np.int64)
+    edges = np.zeros((0, 2), np.int64) if edges is None else np.asarray(edges, np.int64).reshape(-1, 2)
+    edge_solid = np.zeros(0, np.int64) if edge_solid is None else np.asarray(edge_solid, np.int64)
+    face_solid = np.asarray(face_solid, np.int64)
     sizes = np.diff(offsets)
     face_of = np.repeat(np.arange(len(sizes)), sizes)
     k = np.arange(len(indices))
     nxt = k + 1
     last = offsets[1:] - 1
     nxt[last[sizes > 0]] = offsets[:-1][sizes > 0]
+    n = int(num_vertices) if num_vertices is not None else int(max(indices.max(initial=-1), edges.max(initial=-1))) + 1
     out = {}
-    for s in np.unique(face_solid):
-        fm = np.asarray(face_solid) == s
+    for s in np.union1d(face_solid, edge_solid):
+        fm = face_solid == s
         km = fm[face_of]
-        a, b = indices[k[km]], indices[nxt[km]]
+        em = edges[edge_solid == s]
+        a = np.concatenate([indices[k[km]], em[:, 0]])
+        b = np.concatenate([indices[nxt[km]], em[:, 1]])
         e = np.unique(np.c_[np.minimum(a, b), np.maximum(a, b)], axis=0)
-        verts = np.unique(indices[km])
-        n = int(indices.max()) + 1
+        verts = np.unique(np.concatenate([indices[km], em.ravel()]))
         g = coo_matrix((np.ones(len(e)), (e[:, 0], e[:, 1])), shape=(n, n))
         _, lab = connected_components(g, directed=False)
         comps = len(np.unique(lab[verts]))

@@ -195,7 +195,7 @@ def main():
     t = time.time()
 
     if not a.light:
-        topo = measures.topology(r.faces.offsets, r.faces.indices, face_solid)
+        topo = measures.topology(r.faces.offsets, r.faces.indices, face_solid, r.edges, r.edge_solid, r.num_vertices)
         per = []
         for s, tp in topo.items():
             es = measures.solid_euler(solids[s]) if s < len(solids) else None
