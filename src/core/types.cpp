@@ -56,30 +56,37 @@ void MedialMesh::sort_canonically() {
   vertices.swap(v2);
   radius.swap(r2);
 
-  struct Poly {
-    std::vector<int> corners;
-    FaceKind kind;
-    int solid;
-  };
-  std::vector<Poly> polys(num_faces());
+  // Renumber and rotate each polygon in place, then sort face indices by (solid, corners, kind)
+  // over the flat arrays: no per-polygon allocation (half a million faces at 250k samples).
   for (std::size_t f = 0; f < num_faces(); ++f) {
-    auto& p = polys[f];
-    for (int k = face_start[f]; k < face_start[f + 1]; ++k) p.corners.push_back(new_index[face_vertices[k]]);
-    std::rotate(p.corners.begin(), std::min_element(p.corners.begin(), p.corners.end()), p.corners.end());
+    int* b = face_vertices.data() + face_start[f];
+    int* e = face_vertices.data() + face_start[f + 1];
+    for (int* k = b; k != e; ++k) *k = new_index[*k];
+    std::rotate(b, std::min_element(b, e), e);
     // Polygons are not oriented (the triangulation's circulators run either way): walk towards
     // the smaller neighbour.
-    if (p.corners.size() > 2 && p.corners.back() < p.corners[1]) std::reverse(p.corners.begin() + 1, p.corners.end());
-    p.kind = kind[f];
-    p.solid = solid[f];
+    if (e - b > 2 && *(e - 1) < b[1]) std::reverse(b + 1, e);
   }
-  std::sort(polys.begin(), polys.end(), [](const Poly& a, const Poly& b) {
-    return std::tie(a.solid, a.corners, a.kind) < std::tie(b.solid, b.corners, b.kind);
+  std::vector<int> forder(num_faces());
+  std::iota(forder.begin(), forder.end(), 0);
+  std::sort(forder.begin(), forder.end(), [&](int a, int b) {
+    if (solid[a] != solid[b]) return solid[a] < solid[b];
+    const int *pa = face(a), *pb = face(b);
+    if (std::lexicographical_compare(pa, pa + face_size(a), pb, pb + face_size(b))) return true;
+    if (std::lexicographical_compare(pb, pb + face_size(b), pa, pa + face_size(a))) return false;
+    return kind[a] < kind[b];
   });
-  face_start.assign(1, 0);
-  face_vertices.clear();
-  kind.clear();
-  solid.clear();
-  for (const auto& p : polys) add_face(p.corners, p.kind, p.solid);
+  MedialMesh sorted;
+  sorted.face_vertices.reserve(face_vertices.size());
+  std::vector<int> poly;
+  for (int f : forder) {
+    poly.assign(face(f), face(f) + face_size(f));
+    sorted.add_face(poly, kind[f], solid[f]);
+  }
+  face_start.swap(sorted.face_start);
+  face_vertices.swap(sorted.face_vertices);
+  kind.swap(sorted.kind);
+  solid.swap(sorted.solid);
 
   std::vector<std::array<int, 3>> segs(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {

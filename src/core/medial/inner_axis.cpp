@@ -182,13 +182,14 @@ int find_root(std::vector<int>& parent, int x) {
 // inscribed in spheres) give several Delaunay cells with one circumcentre: the true Voronoi
 // diagram has a single vertex there. Merging them removes zero-length Voronoi edges, which would
 // otherwise leave pinholes wherever the perturbation picked one selected facet over another.
-void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps) {
+void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps, const Progress& progress) {
   const size_t n = mc.cells.size();
   // Cells that share a circumcentre come from one cospherical set of samples, so they are
   // adjacent in the triangulation (possibly through cells no face uses): walk neighbours.
   std::vector<int> rep(n, -1);
   std::vector<Cell> stack;
   for (size_t id = 0; id < n; ++id) {
+    if (id % 65536 == 0) report(progress, "inner", 0.15 * static_cast<double>(id) / n);
     if (rep[id] >= 0) continue;
     rep[id] = static_cast<int>(id);
     const Point3 c = mc.centers[id];

@@ -78,7 +78,7 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   t0 = Clock::now();
   {
     const auto [lo, hi] = bounding_box(samples.points);
-    merge_coincident_cells(dt, mc, 1e-9 * norm(sub(hi, lo)));
+    merge_coincident_cells(dt, mc, 1e-9 * norm(sub(hi, lo)), progress);
   }
   report(progress, "inner", 0.2);
   const std::vector<std::uint8_t> in = label_inside(mc, samples, umbrellas, inside, st, progress);
