@@ -47,7 +47,7 @@ def test_python_plain_medial_matches_cli(cli, data, tmp_path):
                           "--quiet"], capture_output=True, text=True, timeout=600)
     assert run.returncode == 0, run.stderr
     ours = cadmedial.compute(source, samples=SAMPLES, theta=PAPER_THETA, plain_medial=True)
-    assert ply_counts(ply) == (ours.num_vertices, ours.num_faces)
+    assert ply_counts(ply) == (ours.num_vertices, ours.num_faces, ours.num_edges)
     cli_stats = json.loads(stats.read_text())
     for key in ("samples", "vertices", "faces"):
         assert cli_stats[key] == ours.stats[key], key
