@@ -2,10 +2,19 @@
 // with context, so callers (CLI, Python) only ever see a message, never a crash.
 #pragma once
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace cadmedial {
+
+/// A number for a message: six significant digits, so that 1e-6 does not print as 0.000000.
+inline std::string message_number(double v) {
+  std::ostringstream out;
+  out.precision(6);
+  out << v;
+  return out.str();
+}
 
 /// Base of all engine errors.
 class Error : public std::runtime_error {

@@ -358,13 +358,6 @@ bool sane_curve(Handle(Geom2d_Curve) c) {
 // BRepCheck accepts is refused here.
 constexpr double kEndSlack = 10.0;
 
-std::string short_number(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
-
 // "" or why edge `e` (numbered `index`) has a curve that does not end where it should; `faces`
 // are the faces that hold it (BRepCheck checks the curves on those faces only).
 std::string curve_end_defect(const TopoDS_Edge& e, int index, const TopTools_ListOfShape& faces) {
@@ -386,8 +379,8 @@ std::string curve_end_defect(const TopoDS_Edge& e, int index, const TopTools_Lis
     if (ends[k].IsNull()) continue;
     const double d = end3d[k].Distance(BRep_Tool::Pnt(ends[k]));
     if (!(d <= allowed))
-      return name + "'s curve does not end at its vertex: " + short_number(d) + " away, tolerance " +
-             short_number(tol) + edge_location(e);
+      return name + "'s curve does not end at its vertex: " + message_number(d) + " away, tolerance " +
+             message_number(tol) + edge_location(e);
   }
   // Its curve on each face, at the ends of its own range (the 3D curve's range on a valid edge:
   // BRepCheck refuses an edge that is not SameRange). A seam has one per orientation.
@@ -404,8 +397,8 @@ std::string curve_end_defect(const TopoDS_Edge& e, int index, const TopTools_Lis
         const gp_Pnt2d uv = pc->Value(params[k]);
         const double d = surface->Value(uv.X(), uv.Y()).Distance(end3d[k]);
         if (!(d <= allowed))
-          return name + "'s curve on a face strays from its 3D curve: " + short_number(d) +
-                 " apart at an end, tolerance " + short_number(tol) + edge_location(e);
+          return name + "'s curve on a face strays from its 3D curve: " + message_number(d) +
+                 " apart at an end, tolerance " + message_number(tol) + edge_location(e);
       }
     }
   }

@@ -30,14 +30,6 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 constexpr double kMaxSamples = 1.0e7;
 constexpr double kMinSamples = 100;
 
-// Six significant digits, so that 1e-6 does not print as 0.000000.
-std::string number(double v) {
-  std::ostringstream out;
-  out.precision(6);
-  out << v;
-  return out.str();
-}
-
 struct Measure {
   std::vector<SolidMeasure> solids;
   double diag = 0;
@@ -82,16 +74,16 @@ SamplingPlan plan(const Measure& m, const SamplingParams& params) {
   }
   const double est = estimate_samples(m, p.spacing);
   if (est > kMaxSamples) {
-    throw InvalidInput("spacing " + number(p.spacing) + " would need about " +
+    throw InvalidInput("spacing " + message_number(p.spacing) + " would need about " +
                        std::to_string(static_cast<long long>(est)) + " samples, more than the limit of " +
                        std::to_string(static_cast<long long>(kMaxSamples)) + "; use --spacing " +
-                       number(spacing_for(m, kMaxSamples)) + " or more");
+                       message_number(spacing_for(m, kMaxSamples)) + " or more");
   }
   // Fewer samples than this cannot carry a medial axis (a box needs its corners, edges and a
   // few points per face): a spacing near the part's size is a mistake, not a coarse answer.
   if (est < kMinSamples)
-    throw InvalidInput("spacing " + number(p.spacing) + " is too coarse for this part (about " +
-                       number(std::round(est)) + " samples); use --spacing " + number(spacing_for(m, 10 * kMinSamples)) +
+    throw InvalidInput("spacing " + message_number(p.spacing) + " is too coarse for this part (about " +
+                       message_number(std::round(est)) + " samples); use --spacing " + message_number(spacing_for(m, 10 * kMinSamples)) +
                        " or less");
   p.estimated_samples = static_cast<std::size_t>(std::llround(est));
   return p;
@@ -110,7 +102,7 @@ void add_timing(Timings& timings, const std::string& stage, double s) {
 
 void check_params(const ComputeParams& params) {
   const double h = params.sampling.spacing;
-  if (!std::isfinite(h) || h < 0) throw InvalidInput("spacing must be a positive finite number, got " + number(h));
+  if (!std::isfinite(h) || h < 0) throw InvalidInput("spacing must be a positive finite number, got " + message_number(h));
   if (h > 0 && params.sampling.target_samples > 0) throw InvalidInput("give either spacing or samples, not both");
   if (params.sampling.target_samples > static_cast<std::size_t>(kMaxSamples))
     throw InvalidInput("samples must be at most " + std::to_string(static_cast<long long>(kMaxSamples)));
@@ -118,9 +110,9 @@ void check_params(const ComputeParams& params) {
     throw InvalidInput("samples must be at least 100, got " + std::to_string(params.sampling.target_samples));
   const double theta = params.medial.theta_deg;
   if (!std::isfinite(theta) || theta <= 0 || theta >= 90)
-    throw InvalidInput("theta must be in (0, 90) degrees, got " + number(theta));
+    throw InvalidInput("theta must be in (0, 90) degrees, got " + message_number(theta));
   const double rho = params.medial.rho;
-  if (!std::isfinite(rho) || rho <= 0) throw InvalidInput("rho must be a positive finite number, got " + number(rho));
+  if (!std::isfinite(rho) || rho <= 0) throw InvalidInput("rho must be a positive finite number, got " + message_number(rho));
 }
 
 namespace {
