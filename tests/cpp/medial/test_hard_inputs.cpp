@@ -31,6 +31,7 @@
 #include "core/features/classify_features.h"
 #include "known_weaknesses.h"
 #include "support/engine_run.h"
+#include "support/radius_check.h"
 #include "support/hard_solids.h"
 #include "support/mesh_measures.h"
 #include "support/shape_measures.h"
@@ -148,14 +149,6 @@ class HardInputs : public ::testing::TestWithParam<int> {
 #define PREPARE_OR_RETURN() \
   if (!prepare()) return
 
-// At most n indices spread evenly over [0, size).
-std::vector<std::size_t> spread(std::size_t size, std::size_t n) {
-  std::vector<std::size_t> idx;
-  const std::size_t step = std::max<std::size_t>(1, size / n);
-  for (std::size_t i = 0; i < size; i += step) idx.push_back(i);
-  return idx;
-}
-
 // Distance from each point to the output, summarized against tolerance tol.
 Summary distances_to_output(const MedialMesh& mesh, double diag, const std::vector<Vec3>& points, double tol) {
   const MeshDistance surface(mesh, diag);
@@ -193,16 +186,8 @@ TEST_P(HardInputs, EveryVertexIsInsideTheSolid) {
 TEST_P(HardInputs, EveryRadiusIsTheDistanceToTheBoundary) {
   PREPARE_OR_RETURN();
   const double eps = 1e-6 * diag_;
-  const BoundaryDistance boundary(solid_);
-  std::vector<double> below, above;
-  std::vector<Vec3> at;
-  for (std::size_t v : spread(mesh().num_vertices(), 300)) {
-    const double D = boundary.distance(mesh().vertices[v]);
-    below.push_back(D - mesh().radius[v]);
-    above.push_back(mesh().radius[v] - D);
-    at.push_back(mesh().vertices[v]);
-  }
-  const Summary lo = summarize(below, at, eps), hi = summarize(above, at, h_ + eps);
+  const RadiusGaps gaps = radius_gaps(mesh(), BoundaryDistance(solid_), 300, eps, h_);
+  const Summary &lo = gaps.below, &hi = gaps.above;
   EXPECT_LE(lo.max, eps) << c().name << ": radius smaller than the distance to the boundary by " << lo.str();
   EXPECT_LE(hi.max, h_ + eps) << c().name << " (h = " << h_ << "): radius larger than the distance by " << hi.str();
 }
