@@ -99,7 +99,7 @@ namespace cadmedial::internal {
 // lie in the convex cell V_s, so they cross nothing.
 std::vector<int> fan_completions(MedialComplex& mc, const std::vector<int>& faces,
                                  const std::vector<std::uint8_t>& inside, MedialAxisStats& st) {
-  std::vector<char> in_star(mc.cells.size(), 0);
+  std::vector<char> in_star(mc.num_cells(), 0);
   for (int c : mc.star_cells) in_star[c] = 1;
   std::unordered_map<int, std::vector<int>> at_sample;  // sample node -> completion faces
   std::unordered_map<int, std::vector<int>> at_cell;    // star cell -> selected Voronoi faces

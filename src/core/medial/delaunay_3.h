@@ -17,8 +17,7 @@
 namespace cadmedial::internal {
 
 struct CellData {
-  int id = -1;             ///< index into MedialComplex::cells once the cell is used
-  int visit = 0;           ///< marks a cell during a walk
+  int id = -1;  ///< the finite cell's index into MedialComplex's cell arrays (number_cells)
 };
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -51,7 +50,10 @@ class NodeMap {
 /// Faces before separation: their corners are Voronoi vertices (cells, id >= 0) or samples
 /// (encoded -(sample+1)).
 struct MedialComplex {
-  std::vector<Cell> cells;       ///< by id
+  /// The finite Delaunay cells in flat arrays (number_cells): the later stages walk around edges
+  /// and across facets millions of times, and CGAL's cells lie wherever its allocator put them.
+  std::vector<std::array<int, 4>> cell_samples;    ///< per cell id: its four samples
+  std::vector<std::array<int, 4>> cell_neighbors;  ///< per cell id: the cell across the facet opposite each corner, -1 off the hull
   std::vector<Point3> centers;   ///< circumcentre per cell id
   std::vector<double> radii;     ///< circumradius per cell id
   std::vector<int> start{0};     ///< CSR over nodes
@@ -72,20 +74,9 @@ struct MedialComplex {
   std::vector<int> rep;
   std::vector<std::array<int, 3>> segments;
 
-  int cell_id(const Cell& c) {
-    if (c->info().id < 0) {
-      c->info().id = static_cast<int>(cells.size());
-      cells.push_back(c);
-      const K::Point_3 x = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(),
-                                              c->vertex(2)->point(), c->vertex(3)->point());
-      centers.push_back({x.x(), x.y(), x.z()});
-      // The smallest of the four distances: the same whichever vertex CGAL stores first.
-      double r2 = CGAL::squared_distance(x, c->vertex(0)->point());
-      for (int k = 1; k < 4; ++k) r2 = std::min(r2, CGAL::squared_distance(x, c->vertex(k)->point()));
-      radii.push_back(std::sqrt(r2));
-    }
-    return c->info().id;
-  }
+  /// The id number_cells gave a finite cell.
+  static int cell_id(const Cell& c) { return c->info().id; }
+  std::size_t num_cells() const { return centers.size(); }
   static int sample_node(int s) { return -(s + 1); }
   void add(const std::vector<int>& face_nodes, FaceKind k, std::array<int, 2> pq = {-1, -1}, bool is_filler = false) {
     dual.push_back(pq);

@@ -182,37 +182,26 @@ int find_root(std::vector<int>& parent, int x) {
 // inscribed in spheres) give several Delaunay cells with one circumcentre: the true Voronoi
 // diagram has a single vertex there. Merging them removes zero-length Voronoi edges, which would
 // otherwise leave pinholes wherever the perturbation picked one selected facet over another.
-void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps, const Progress& progress) {
-  const size_t n = mc.cells.size();
+void merge_coincident_cells(MedialComplex& mc, double eps, const Progress& progress) {
+  const size_t n = mc.num_cells();
   // Cells that share a circumcentre come from one cospherical set of samples, so they are
-  // adjacent in the triangulation (possibly through cells no face uses): walk neighbours.
-  std::vector<int> rep(n, -1);
-  std::vector<Cell> stack;
+  // adjacent in the triangulation: walk neighbours.
+  std::vector<int> rep(n, -1), mark(n, -1), stack;
   for (size_t id = 0; id < n; ++id) {
     if (id % 65536 == 0) report(progress, "inner", 0.15 * static_cast<double>(id) / n);
     if (rep[id] >= 0) continue;
     rep[id] = static_cast<int>(id);
     const Point3 c = mc.centers[id];
-    const int mark = static_cast<int>(id) + 1;
-    mc.cells[id]->info().visit = mark;
-    stack.assign(1, mc.cells[id]);
+    mark[id] = static_cast<int>(id);
+    stack.assign(1, static_cast<int>(id));
     while (!stack.empty()) {
-      const Cell cell = stack.back();
+      const int cell = stack.back();
       stack.pop_back();
-      for (int i = 0; i < 4; ++i) {
-        const Cell nb = cell->neighbor(i);
-        if (nb->info().visit == mark || dt.is_infinite(nb)) continue;
-        Point3 x;
-        if (nb->info().id >= 0) {
-          x = mc.centers[nb->info().id];
-        } else {
-          const K::Point_3 p = CGAL::circumcenter(nb->vertex(0)->point(), nb->vertex(1)->point(),
-                                                  nb->vertex(2)->point(), nb->vertex(3)->point());
-          x = {p.x(), p.y(), p.z()};
-        }
-        if (!(norm(sub(x, c)) <= eps)) continue;  // also for the NaN centre of a flat cell
-        nb->info().visit = mark;
-        if (nb->info().id >= 0) rep[nb->info().id] = static_cast<int>(id);
+      for (int nb : mc.cell_neighbors[cell]) {
+        if (nb < 0 || mark[nb] == static_cast<int>(id)) continue;
+        if (!(norm(sub(mc.centers[nb], c)) <= eps)) continue;  // also for the NaN centre of a flat cell
+        mark[nb] = static_cast<int>(id);
+        rep[nb] = static_cast<int>(id);
         stack.push_back(nb);
       }
     }
@@ -292,7 +281,7 @@ void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps, c
 
 std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
                                        const InsideTest& inside, MedialAxisStats& st, const Progress& progress) {
-  const size_t n = mc.cells.size();
+  const size_t n = mc.num_cells();
   std::vector<std::uint8_t> label(n, 0);
   std::vector<int> unsure;
   // 2: a corner of the axis proper; 1: of filler faces only, whose doubtful corners are called
@@ -318,7 +307,7 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
     if (beyond) continue;  // label 0
     int in = 0, out = 0;
     for (int j = 0; j < 4; ++j) {
-      const int v = vote(samples, mc.cells[id]->vertex(j)->info(), x);
+      const int v = vote(samples, mc.cell_samples[id][j], x);
       in += v > 0;
       out += v < 0;
     }
@@ -339,7 +328,7 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
       if (k % 16384 == 0) report(progress, "inner", 0.4 + 0.1 * static_cast<double>(k) / unsure.size());
       const int id = unsure[k];
       std::array<int, 4> near;
-      for (int j = 0; j < 4; ++j) near[j] = mc.cells[id]->vertex(j)->info();
+      for (int j = 0; j < 4; ++j) near[j] = mc.cell_samples[id][j];
       int side = mesh.side_near(mc.centers[id], near);
       if (side < 0 && used[id] == 2) side = mesh.side(mc.centers[id]);
       if (side >= 0)
@@ -403,7 +392,7 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
     else
       out.assign(cells.edges[i - nf].begin(), cells.edges[i - nf].end());
   };
-  NodeMap<int> node_owner(mc.cells.size(), samples.size(), -1);
+  NodeMap<int> node_owner(mc.num_cells(), samples.size(), -1);
   std::vector<int> parent(items), corners;
   std::iota(parent.begin(), parent.end(), 0);
   for (size_t i = 0; i < items; ++i) {
@@ -433,7 +422,7 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
   report(progress, "inner", 0.95);
   MedialMesh mesh;
   AxisCells out;
-  NodeMap<int> out_index(mc.cells.size(), samples.size(), -1);
+  NodeMap<int> out_index(mc.num_cells(), samples.size(), -1);
   auto vertex = [&](int node) {
     int& index = out_index[node];
     if (index < 0) {

@@ -15,7 +15,7 @@
 namespace cadmedial::internal {
 
 /// Merges cells whose circumcentres lie within eps (cospherical samples).
-void merge_coincident_cells(const Delaunay& dt, MedialComplex& mc, double eps, const Progress& progress);
+void merge_coincident_cells(MedialComplex& mc, double eps, const Progress& progress);
 /// 1 inside, 0 outside, per cell id of mc.
 std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
                                        const InsideTest& inside, MedialAxisStats& st, const Progress& progress);

@@ -13,6 +13,7 @@
 #include "complete_medial_axis.h"
 #include "geometry_3.h"
 #include "inner_axis.h"
+#include "number_cells.h"
 #include "select_facets.h"
 
 namespace cadmedial {
@@ -33,6 +34,7 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   auto t0 = Clock::now();
   Delaunay dt;
   std::vector<Vertex> handle(samples.size());
+  std::vector<int> rank(samples.size());
   {
     // CGAL's spatial sort (Hilbert curve over a BRIO shuffle with its own fixed seed), as its
     // range insert does, but keeping each sample's index.
@@ -46,6 +48,7 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
     Vertex hint;
     std::size_t done = 0;
     for (std::size_t i : order) {
+      rank[i] = static_cast<int>(done);
       // Cancelling must not wait for the whole triangulation (3 s at 250k samples).
       if (++done % 16384 == 0) report(progress, "delaunay", static_cast<double>(done) / order.size());
       const Vertex v = dt.insert(pts[i], hint == Vertex() ? Cell() : hint->cell());
@@ -64,7 +67,8 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   const Umbrellas pole_umbrellas = params.plain_medial ? umbrellas_from_poles(dt, samples.size()) : Umbrellas();
   const Selection sel(samples, params.plain_medial ? pole_umbrellas : umbrellas, params);
   MedialComplex mc;
-  select_facets(dt, sel, mc, st, progress, !params.plain_medial);
+  number_cells(dt, rank, mc);
+  select_facets(sel, mc, st, progress, !params.plain_medial);
   st.timings.push_back({"selection", seconds_since(t0)});
 
   t0 = Clock::now();
@@ -78,7 +82,7 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   t0 = Clock::now();
   {
     const auto [lo, hi] = bounding_box(samples.points);
-    merge_coincident_cells(dt, mc, 1e-9 * norm(sub(hi, lo)), progress);
+    merge_coincident_cells(mc, 1e-9 * norm(sub(hi, lo)), progress);
   }
   report(progress, "inner", 0.2);
   const std::vector<std::uint8_t> in = label_inside(mc, samples, umbrellas, inside, st, progress);

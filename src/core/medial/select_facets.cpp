@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "geometry_3.h"
 
@@ -142,28 +143,56 @@ bool Selection::passes(int p, int q) const {
 // belong to the outer medial axis (4.2.5) and are not kept. With `fillers`, the bounded facets of
 // the other edges are added too, marked: the Voronoi complex inside the solid has the solid's
 // homotopy type, and collapse_fillers keeps the few of them the selected axis needs for it.
-void select_facets(const Delaunay& dt, const Selection& sel, MedialComplex& mc, MedialAxisStats& st,
-                   const Progress& progress, bool fillers) {
+// Each edge is visited once, from the first cell (in mc's order) around it: a walk around the
+// edge marks it in the other cells. (CGAL's edge iterator walks around every edge of every cell
+// to find the edge's first cell, and then we walked again.)
+void select_facets(const Selection& sel, MedialComplex& mc, MedialAxisStats& st, const Progress& progress,
+                   bool fillers) {
+  static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  auto edge_bit = [](int i, int j) {
+    static constexpr int kIndex[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
+    return static_cast<std::uint8_t>(1u << kIndex[i][j]);
+  };
+  auto corner = [&](int cell, int sample) {
+    const auto& v = mc.cell_samples[cell];
+    return v[0] == sample ? 0 : v[1] == sample ? 1 : v[2] == sample ? 2 : 3;
+  };
+  const int nc = static_cast<int>(mc.num_cells());
+  std::vector<std::uint8_t> done(nc, 0);
   std::vector<int> face;
-  size_t count = 0;
-  const size_t total = 7 * dt.number_of_vertices();  // about; counting the edges is a full pass
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e, ++count) {
-    if (count % 65536 == 0) report(progress, "selection", static_cast<double>(count) / std::max<size_t>(1, total));
-    const int p = e->first->vertex(e->second)->info(), q = e->first->vertex(e->third)->info();
-    const bool selected = sel.selected(p, q);
-    if (!selected && !fillers) continue;
-    st.selected_facets += selected;
-    face.clear();
-    bool bounded = true;
-    auto cc = dt.incident_cells(*e), done = cc;
-    do {
-      if (dt.is_infinite(cc)) {
-        bounded = false;
-        break;
+  for (int c = 0; c < nc; ++c) {
+    if (c % 65536 == 0) report(progress, "selection", static_cast<double>(c) / std::max(1, nc));
+    for (const auto& [i, j] : kEdge) {
+      if (done[c] & edge_bit(i, j)) continue;
+      const int p = mc.cell_samples[c][i], q = mc.cell_samples[c][j];
+      const bool selected = sel.selected(p, q);
+      if (!selected && !fillers) continue;
+      st.selected_facets += selected;
+      // Around pq in CGAL's turning sense (its cell circulator); off the hull, back the other way
+      // from c to mark the rest.
+      face.clear();
+      bool bounded = true;
+      int cur = c, ci = i, cj = j;
+      do {
+        face.push_back(cur);
+        done[cur] |= edge_bit(ci, cj);
+        const int nb = mc.cell_neighbors[cur][Delaunay::next_around_edge(ci, cj)];
+        if (nb < 0) {
+          bounded = false;
+          break;
+        }
+        cur = nb, ci = corner(nb, p), cj = corner(nb, q);
+      } while (cur != c);
+      if (!bounded) {
+        cur = c, ci = i, cj = j;
+        for (int nb; (nb = mc.cell_neighbors[cur][Delaunay::next_around_edge(cj, ci)]) >= 0;) {
+          cur = nb, ci = corner(nb, p), cj = corner(nb, q);
+          done[cur] |= edge_bit(ci, cj);
+        }
+        continue;
       }
-      face.push_back(mc.cell_id(cc));
-    } while (++cc != done);
-    if (bounded && face.size() >= 3) mc.add(face, FaceKind::Voronoi, {p, q}, !selected);
+      if (face.size() >= 3) mc.add(face, FaceKind::Voronoi, {p, q}, !selected);
+    }
   }
 }
 

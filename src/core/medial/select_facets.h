@@ -34,7 +34,8 @@ Umbrellas umbrellas_from_poles(const Delaunay& dt, std::size_t n);
 
 /// The bounded Voronoi facets dual to selected Delaunay edges, added to mc; with `fillers`, those
 /// of the other edges too, marked as fillers.
-void select_facets(const Delaunay& dt, const Selection& sel, MedialComplex& mc, MedialAxisStats& st,
-                   const Progress& progress, bool fillers);
+/// Needs mc's cells numbered (number_cells).
+void select_facets(const Selection& sel, MedialComplex& mc, MedialAxisStats& st, const Progress& progress,
+                   bool fillers);
 
 }  // namespace cadmedial::internal
