@@ -110,7 +110,12 @@ Umbrellas umbrellas_from_poles(const Delaunay& dt, std::size_t n) {
 
 // Section 3: the Angle and Ratio conditions at p's umbrella.
 Selection::Selection(const Samples& s, const Umbrellas& u, const MedialParams& params)
-    : s_(s), u_(u), sin_theta_(std::sin(params.theta_deg * 3.14159265358979323846 / 180.0)), rho_(params.rho) {
+    : s_(s),
+      u_(u),
+      sin_theta_(std::sin(params.theta_deg * 3.14159265358979323846 / 180.0)),
+      rho_(params.rho),
+      cos_cone_side_(std::cos(45.0 * 3.14159265358979323846 / 180.0)),
+      concave_fans_(!params.plain_medial) {
   // Each sample's umbrella normals side by side, and its largest circumradius: the Ratio
   // condition against every triangle is one comparison against the largest.
   const TriangleGeometry g = triangle_geometry(s, u);
@@ -123,12 +128,28 @@ Selection::Selection(const Samples& s, const Umbrellas& u, const MedialParams& p
     }
 }
 
+// At a concave edge the inner medial balls touching p have their centres anywhere in the wedge
+// between the two faces' inward normals (not along one normal): the axis leaves a concave edge as
+// a fan, e.g. the sheet under a thin rib, which bisects the rib's two foot edges. Every umbrella
+// triangle on the floor is tangent to pq there, so the Angle condition cannot pass; the exact
+// normals from the B-rep can: pq (within theta) in the wedge, and well away from the edge's
+// direction, which chords between samples along the edge are close to.
+bool Selection::in_concave_cone(int p, const Point3& d, double len) const {
+  if (!concave_fans_ || s_.edge_convex[p] != 2) return false;
+  const Point3 &n1 = s_.normal[p], &n2 = s_.normal2[p];  // outward
+  if (dot(d, n1) > sin_theta_ * len || dot(d, n2) > sin_theta_ * len) return false;
+  const Point3 t = cross(n1, n2);
+  const double tl = norm(t);
+  return tl > sin_theta_ && std::abs(dot(d, t)) <= cos_cone_side_ * len * tl;
+}
+
 bool Selection::passes(int p, int q) const {
   const int begin = u_.start[p], end = u_.start[p + 1];
   if (begin == end) return false;
   const Point3 d = sub(s_.points[q], s_.points[p]);
   const double len = norm(d);
   if (len <= 0) return false;
+  if (in_concave_cone(p, d, len)) return true;
   // Ratio [rho]: |pq| / R_ptu > rho for every umbrella triangle.
   if (len > rho_ * max_radius_[p]) return true;
   // Angle [theta]: the acute angle between n_ptu and pq is below pi/2 - theta for every

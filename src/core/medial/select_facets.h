@@ -27,6 +27,9 @@ class Selection {
   double sin_theta_, rho_;
   std::vector<Point3> normals_;     ///< each sample's umbrella normals side by side (CSR of u_)
   std::vector<double> max_radius_;  ///< each sample's largest umbrella circumradius
+  double cos_cone_side_;
+  bool concave_fans_;  ///< the concave-edge wedge test (CAD_MEDIAL with exact normals; not plain MEDIAL)
+  bool in_concave_cone(int p, const Point3& d, double len) const;
 };
 
 /// MEDIAL's umbrellas from the poles (section 3), for the ablation.

@@ -20,15 +20,9 @@ inline bool known_weakness(const std::string& test, const std::string& name) {
       // One vertex of ~20,000 is 0.35 from the axis against 0.33: a fin of the same cloud.
       {"NearAxis", "Cylinder"},
       // Hard inputs (test_hard_inputs.cpp; figures measured on the hard-inputs branch).
-      // The sheet under a rib, whose nearest boundary points lie on its two concave foot edges,
-      // is missing: exact axis points up to 2.6 (4.7 h) from the output, whatever the density (rib
-      // 2 wide, or h = 0.15: still 2.5). At a concave-edge sample the Angle condition is tested
-      // against the umbrella's triangles of the floor face, which pq lies along; Ratio |pq| / R is
-      // about 1.6. (The boss's line, missing the same way before, is now restored by the topology
-      // repair.)
-      {"UnderFeature", "TinyRib"},
       // V - E + F = -15 at the default density (h = 0.55 > the rib's 0.5 width: 14 small holes in
-      // the rib's sheet) besides the missing sheet under it (above); 0 from h = 0.25 down.
+      // the rib's sheet); 0 from h = 0.25 down. (The sheet under the rib, missing before, is
+      // selected by the concave-edge wedge test in select_facets.cpp.)
       {"Euler", "TinyRib"},
       // Where a 3-degree wedge is thinner than about h (0.83 to 1.04 h) the axis stops: its edge is 3.97
       // from the output at h = 0.25 (missing length ~ h / tan(angle): 0.72 at 20 degrees, 1.28 at
