@@ -27,9 +27,11 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 }  // namespace
 
-MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const MedialParams& params,
-                       const InsideTest& inside, int solid_index, MedialAxisStats* stats_out,
-                       const Progress& progress) {
+namespace {
+
+MedialMesh medial_axis_after(const Samples& samples, const std::function<const Umbrellas&()>& wait_for_umbrellas,
+                             const MedialParams& params, const InsideTest& inside, int solid_index,
+                             MedialAxisStats* stats_out, const Progress& progress) {
   MedialAxisStats st;
   auto t0 = Clock::now();
   Delaunay dt;
@@ -62,6 +64,7 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   }
   st.timings.push_back({"delaunay", seconds_since(t0)});
   report(progress, "selection", 0.0);
+  const Umbrellas& umbrellas = wait_for_umbrellas();
 
   t0 = Clock::now();
   const Umbrellas pole_umbrellas = params.plain_medial ? umbrellas_from_poles(dt, samples.size()) : Umbrellas();
@@ -91,6 +94,20 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
   st.timings.push_back({"inner", seconds_since(t0)});
   if (stats_out) *stats_out = st;
   return mesh;
+}
+
+}  // namespace
+
+MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const MedialParams& params,
+                       const InsideTest& inside, int solid_index, MedialAxisStats* stats, const Progress& progress) {
+  return medial_axis_after(samples, [&]() -> const Umbrellas& { return umbrellas; }, params, inside, solid_index,
+                           stats, progress);
+}
+
+MedialMesh medial_axis(const Samples& samples, std::shared_future<Umbrellas> umbrellas, const MedialParams& params,
+                       const InsideTest& inside, int solid_index, MedialAxisStats* stats, const Progress& progress) {
+  return medial_axis_after(samples, [&]() -> const Umbrellas& { return umbrellas.get(); }, params, inside,
+                           solid_index, stats, progress);
 }
 
 double bare_delaunay_seconds(const std::vector<Point3>& points) {

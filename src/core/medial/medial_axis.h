@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <future>
 #include <vector>
 
 #include "../progress.h"
@@ -35,6 +36,12 @@ struct MedialAxisStats {
 
 /// The inner medial axis of one solid from its samples and umbrellas. Faces get `solid_index`.
 MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const MedialParams& params,
+                       const InsideTest& inside, int solid_index, MedialAxisStats* stats = nullptr,
+                       const Progress& progress = {});
+
+/// The same with the umbrellas still being computed on another thread: the Delaunay triangulation
+/// does not need them, so compute_medial_axis reconstructs the faces meanwhile (2 cores).
+MedialMesh medial_axis(const Samples& samples, std::shared_future<Umbrellas> umbrellas, const MedialParams& params,
                        const InsideTest& inside, int solid_index, MedialAxisStats* stats = nullptr,
                        const Progress& progress = {});
 

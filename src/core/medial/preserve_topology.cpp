@@ -47,8 +47,28 @@ EdgeIncidence edge_incidence(const MedialComplex& mc, const std::vector<int>& fa
     g.face_start.push_back(g.face_start.back() + (mc.start[faces[i] + 1] - mc.start[faces[i]]));
   }
   for (const auto& e : lone) entries.push_back({edge_key(e[0], e[1]), -1, -1});
-  std::sort(entries.begin(), entries.end(),
-            [](const Entry& x, const Entry& y) { return x.key < y.key || (x.key == y.key && x.slot < y.slot); });
+  // Sorted by (key, slot): a counting sort on the low corner (cells 0.., then samples, whose
+  // negative node numbers come last as unsigned keys), then each small bucket (a million entries
+  // at 65k samples: three times faster than one std::sort).
+  int min_low = 0;
+  for (const Entry& e : entries) min_low = std::min(min_low, key_low(e.key));
+  const int nc = static_cast<int>(mc.num_cells());
+  auto bucket = [&](const Entry& e) {
+    const int low = key_low(e.key);
+    return low >= 0 ? low : nc + (low - min_low);
+  };
+  std::vector<int> bucket_start(static_cast<std::size_t>(nc) - min_low + 1, 0);
+  for (const Entry& e : entries) ++bucket_start[bucket(e) + 1];
+  for (std::size_t b = 1; b < bucket_start.size(); ++b) bucket_start[b] += bucket_start[b - 1];
+  {
+    std::vector<Entry> sorted(entries.size());
+    std::vector<int> fill(bucket_start.begin(), bucket_start.end() - 1);
+    for (const Entry& e : entries) sorted[fill[bucket(e)]++] = e;
+    entries.swap(sorted);
+  }
+  for (std::size_t b = 0; b + 1 < bucket_start.size(); ++b)
+    std::sort(entries.begin() + bucket_start[b], entries.begin() + bucket_start[b + 1],
+              [](const Entry& x, const Entry& y) { return x.key < y.key || (x.key == y.key && x.slot < y.slot); });
   g.face_edge.resize(g.face_start.back());
   g.edge_face.reserve(entries.size());
   for (size_t k = 0; k < entries.size(); ++k) {
@@ -218,24 +238,30 @@ AxisCells attach_by_expansion(const MedialComplex& mc, AxisCells base, const std
   return base;
 }
 
-long euler_characteristic(const MedialComplex& mc, const AxisCells& cells) {
-  std::vector<int> corners;
-  std::vector<std::uint64_t> edges;
-  for (int f : cells.faces)
-    for_each_side(mc, f, [&](int, int a, int b) {
-      corners.push_back(a);
-      edges.push_back(edge_key(a, b));
-    });
-  for (const auto& e : cells.edges) {
-    corners.push_back(e[0]);
-    corners.push_back(e[1]);
-    edges.push_back(edge_key(e[0], e[1]));
-  }
-  std::sort(corners.begin(), corners.end());
-  std::sort(edges.begin(), edges.end());
-  const long v = std::unique(corners.begin(), corners.end()) - corners.begin();
-  const long ed = std::unique(edges.begin(), edges.end()) - edges.begin();
-  return v - ed + static_cast<long>(cells.faces.size());
+long euler_characteristic(const MedialMesh& mesh) {
+  // Distinct sides by their smaller vertex (buckets), not by sorting: a million sides at 65k
+  // samples.
+  const std::size_t nv = mesh.num_vertices();
+  std::vector<int> start(nv + 1, 0), other;
+  auto for_each_side = [&](auto&& fn) {
+    for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+      const int* c = mesh.face(f);
+      const int n = static_cast<int>(mesh.face_size(f));
+      for (int k = 0; k < n; ++k) fn(c[k], c[(k + 1) % n]);
+    }
+    for (const auto& e : mesh.edges) fn(e[0], e[1]);
+  };
+  for_each_side([&](int a, int b) { ++start[std::min(a, b) + 1]; });
+  for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+  other.resize(start[nv]);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for_each_side([&](int a, int b) { other[fill[std::min(a, b)]++] = std::max(a, b); });
+  std::vector<int> seen(nv, -1);
+  long edges = 0;
+  for (std::size_t v = 0; v < nv; ++v)
+    for (int k = start[v]; k < start[v + 1]; ++k)
+      if (seen[other[k]] != static_cast<int>(v)) seen[other[k]] = static_cast<int>(v), ++edges;
+  return static_cast<long>(nv) - edges + static_cast<long>(mesh.num_faces());
 }
 
 }  // namespace cadmedial::internal

@@ -32,7 +32,7 @@ AxisCells collapse_fillers(const MedialComplex& mc, const std::vector<int>& face
 AxisCells attach_by_expansion(const MedialComplex& mc, AxisCells base, const std::vector<int>& candidates,
                               MedialAxisStats& st);
 
-/// V - E + F of these cells, vertices and edges shared by corner index.
-long euler_characteristic(const MedialComplex& mc, const AxisCells& cells);
+/// V - E + F of a mesh, vertices and edges shared by index (isolated vertices count).
+long euler_characteristic(const MedialMesh& mesh);
 
 }  // namespace cadmedial::internal

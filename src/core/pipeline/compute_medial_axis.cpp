@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <map>
 #include <sstream>
 
@@ -202,15 +203,25 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       for (bool c : features[i].nonconcave_corner) ss.nonconcave_corners += c;
       ss.samples = samples[i].size();
 
-      t0 = Clock::now();
+      // The face-by-face reconstruction runs on a second thread while CGAL triangulates (it needs
+      // only the samples; the selection after the triangulation waits for it). No progress
+      // reports from there: the callback may hold Python's lock. Its stage time overlaps
+      // "delaunay".
       report(sub, "reconstruction", 0.0);
-      const Umbrellas umbrellas = reconstruct_faces(samples[i], sub);
-      add_timing(stats.timings, "reconstruction", seconds_since(t0));
+      double reconstruction_seconds = 0;
+      std::shared_future<Umbrellas> umbrellas =
+          std::async(std::launch::async, [&s = samples[i], &reconstruction_seconds] {
+            const auto start = Clock::now();
+            Umbrellas u = reconstruct_faces(s);
+            reconstruction_seconds = seconds_since(start);
+            return u;
+          }).share();
 
       // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt.
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9));
       MedialAxisStats ms;
       const MedialMesh mesh = medial_axis(samples[i], umbrellas, params.medial, inside, i, &ms, sub);
+      add_timing(stats.timings, "reconstruction", reconstruction_seconds);
       for (const auto& [stage, s] : ms.timings) add_timing(stats.timings, stage, s);
       ss.vertices = mesh.num_vertices();
       ss.faces = mesh.num_faces();
