@@ -109,7 +109,8 @@ class ReconstructionSide {
 
   // Side of q from its closest mesh point on triangle t (kWithinSag when q lies within the
   // mesh's sag of it): by the triangle's normal when the point is interior, else by the
-  // angle-weighted pseudo-normal of the edge or vertex it lies on (Baerentzen and Aanaes), which gives the right sign for any point off a closed mesh.
+  // angle-weighted pseudo-normal of the edge or vertex it lies on (Baerentzen and Aanaes), which
+  // gives the right sign for any point off a closed mesh.
   int side_of(const K::Point_3& q, const K::Point_3& closest, std::size_t t) const {
     const auto& tri = tris_[t];
     double sag = 0, edge2 = 0;
