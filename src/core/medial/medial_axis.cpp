@@ -1,20 +1,16 @@
 #include "medial_axis.h"
 
 #include <chrono>
-#include <numeric>
 
 #include "../errors.h"
 #include "delaunay_3.h"
-
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
-#include <CGAL/property_map.h>
-#include <CGAL/spatial_sort.h>
 
 #include "complete_medial_axis.h"
 #include "geometry_3.h"
 #include "inner_axis.h"
 #include "number_cells.h"
 #include "select_facets.h"
+#include "triangulate.h"
 
 namespace cadmedial {
 
@@ -35,33 +31,9 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
   MedialAxisStats st;
   auto t0 = Clock::now();
   Delaunay dt;
-  std::vector<Vertex> handle(samples.size());
-  std::vector<int> rank(samples.size());
-  {
-    // CGAL's spatial sort (Hilbert curve over a BRIO shuffle with its own fixed seed), as its
-    // range insert does, but keeping each sample's index.
-    std::vector<K::Point_3> pts;
-    pts.reserve(samples.size());
-    for (const Point3& p : samples.points) pts.emplace_back(p[0], p[1], p[2]);
-    std::vector<std::size_t> order(pts.size());
-    std::iota(order.begin(), order.end(), 0);
-    using Traits = CGAL::Spatial_sort_traits_adapter_3<K, CGAL::Pointer_property_map<K::Point_3>::type>;
-    CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(pts)));
-    Vertex hint;
-    std::size_t done = 0;
-    for (std::size_t i : order) {
-      rank[i] = static_cast<int>(done);
-      // Cancelling must not wait for the whole triangulation (3 s at 250k samples).
-      if (++done % 16384 == 0) report(progress, "delaunay", static_cast<double>(done) / order.size());
-      const Vertex v = dt.insert(pts[i], hint == Vertex() ? Cell() : hint->cell());
-      // A sample that coincides with another keeps no vertex of its own.
-      if (v->info() < 0 || v->info() == static_cast<int>(i)) {
-        v->info() = static_cast<int>(i);
-        handle[i] = v;
-      }
-      hint = v;
-    }
-  }
+  std::vector<Vertex> handle;
+  std::vector<int> rank;
+  triangulate(samples, dt, handle, rank, progress, "delaunay");
   st.timings.push_back({"delaunay", seconds_since(t0)});
   report(progress, "selection", 0.0);
   const Umbrellas& umbrellas = wait_for_umbrellas();
