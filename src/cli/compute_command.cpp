@@ -50,6 +50,7 @@ int run_compute(const Args& args) {
   if (!args.stats.empty()) summary << " and " << args.stats;
   summary << ".\n";
   std::fputs(summary.str().c_str(), stdout);
+  for (const std::string& w : result.stats.warnings) std::fprintf(stderr, "cadmedial: warning: %s\n", w.c_str());
   return 0;
 }
 

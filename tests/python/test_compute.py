@@ -95,3 +95,15 @@ def test_plan_sampling_predicts_the_sample_count(box_step):
 def test_compute_is_repeatable_up_to_order(box_step):
     assert_same_mesh(cadmedial.compute(box_step, samples=SAMPLES),
                      cadmedial.compute(box_step, samples=SAMPLES))
+
+
+def test_walls_thinner_than_two_spacings_are_warned_about(box_step):
+    # The box is 10 thick: its medial radius is 5, under a spacing of 6 (the sheet between the
+    # 20 x 30 faces has samples only 10 / 6 spacings apart), not under 3.
+    coarse = cadmedial.compute(box_step, spacing=6.0)
+    assert len(coarse.stats["warnings"]) == 1
+    assert "thinner than two sample spacings" in coarse.stats["warnings"][0]
+    assert 10.0 - 1e-6 <= coarse.stats["solids"][0]["thinnest_wall"] <= 12.0
+    fine = cadmedial.compute(box_step, spacing=3.0)
+    assert fine.stats["warnings"] == []
+    assert 10.0 - 1e-6 <= fine.stats["solids"][0]["thinnest_wall"] <= 12.0

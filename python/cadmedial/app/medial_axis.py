@@ -104,6 +104,9 @@ class MedialAxis:
         total = result.stats.get("timings", {}).get("total")
         obj.ComputeTime = float(total) if total is not None else time.perf_counter() - started
         obj.Status = "ok"
+        # e.g. walls too thin for the spacing: the result stands, the user should know.
+        for warning in result.stats.get("warnings", []):
+            App.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
 
     def _take_pending(self, obj):
         pending, self.pending = self.pending, None

@@ -17,6 +17,7 @@
 #include "../medial/medial_axis.h"
 #include "../medial/reconstruct_faces.h"
 #include "../sampling/sample_solid.h"
+#include "../sampling/thin_walls.h"
 #include "exact_inside_test.h"
 
 namespace cadmedial {
@@ -140,6 +141,23 @@ std::vector<Samples> sample_solids(const std::vector<TopoDS_Solid>& solids, cons
   return samples;
 }
 
+// Facing walls closer than two spacings: the Voronoi sheet between them is only as good as the
+// samples across the wall (hardening.md: a rib narrower than h leaves holes in its sheet), and
+// nothing else in the result would say so.
+void warn_of_thin_walls(const Samples& samples, double spacing, int solid, int solids, SolidStats& ss,
+                        std::vector<std::string>& warnings) {
+  const ThinWall w = thinnest_wall(samples, 2.0 * spacing);
+  ss.thinnest_wall = 2.0 * w.radius;
+  if (!(w.radius < spacing)) return;
+  std::ostringstream msg;
+  msg.precision(3);
+  if (solids > 1) msg << "solid " << solid + 1 << ": ";
+  msg << "walls down to " << 2.0 * w.radius << " thick (near (" << w.at[0] << ", " << w.at[1] << ", " << w.at[2]
+      << ")) are thinner than two sample spacings (" << 2.0 * spacing << "); the axis between them may have holes "
+      << "or extra loops: a spacing of " << w.radius << " or less resolves them";
+  warnings.push_back(msg.str());
+}
+
 }  // namespace
 
 SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& params) {
@@ -202,6 +220,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       }
       for (bool c : features[i].nonconcave_corner) ss.nonconcave_corners += c;
       ss.samples = samples[i].size();
+      warn_of_thin_walls(samples[i], spacing, i, n, ss, stats.warnings);
 
       // The face-by-face reconstruction runs on a second thread while CGAL triangulates (it needs
       // only the samples; the selection after the triangulation waits for it). No progress

@@ -27,6 +27,9 @@ struct SolidStats {
   std::size_t edges = 0;           ///< output edges: 1-D parts of the axis that no face carries
   std::size_t unattached_faces = 0;  ///< completion triangles left out because they would close a loop
   long euler_characteristic = 0;   ///< V - E + F of the output; the solid's when the topology is right
+  /// Thickness of the thinnest wall the samples show (thinnest_wall), if under 4 spacings, else
+  /// infinity.
+  double thinnest_wall = 0.0;
   std::size_t exact_inside_tests = 0;  ///< Voronoi vertices the B-rep classifier had to settle
 };
 
@@ -38,6 +41,9 @@ struct ComputeStats {
   std::size_t edges = 0;          ///< 1-D edges of the output mesh (MedialMesh::edges)
   std::vector<SolidStats> solids;
   Timings timings;                ///< per stage, plus "total"; includes "delaunay"
+  /// What the user should know about the result (e.g. walls too thin for the spacing), one
+  /// sentence each.
+  std::vector<std::string> warnings;
   double peak_rss_mb = 0.0;
 };
 

@@ -56,6 +56,9 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += (i ? ", " : "") + quoted(stats.timings[i].first) + ": " + number(stats.timings[i].second);
   j += "},\n";
   j += "  \"peak_rss_mb\": " + number(stats.peak_rss_mb) + ",\n";
+  j += "  \"warnings\": [";
+  for (std::size_t i = 0; i < stats.warnings.size(); ++i) j += (i ? ", " : "") + quoted(stats.warnings[i]);
+  j += "],\n";
   j += "  \"solids\": [";
   for (std::size_t i = 0; i < stats.solids.size(); ++i) {
     const SolidStats& s = stats.solids[i];
@@ -74,6 +77,7 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"unattached_faces\": " + std::to_string(s.unattached_faces);
     j += ", \"euler_characteristic\": " + std::to_string(s.euler_characteristic);
     j += ", \"exact_inside_tests\": " + std::to_string(s.exact_inside_tests);
+    j += ", \"thinnest_wall\": " + number(s.thinnest_wall);
     j += "}";
   }
   j += stats.solids.empty() ? "]\n" : "\n  ]\n";

@@ -55,6 +55,9 @@ TEST(StatsToJson, IsValidJson) {
   test::TempDir dir;
   ComputeStats s = sample_stats();
   s.timings.push_back({"we\"ird\\stage\n", std::numeric_limits<double>::quiet_NaN()});
+  s.warnings = {"walls down to 1 thick \"here\"", "second"};
+  s.solids[0].thinnest_wall = 1.5;
+  s.solids[1].thinnest_wall = std::numeric_limits<double>::infinity();  // none found: null
   test::write_file(dir.file("s.json"), stats_to_json(s));
   test::write_file(dir.file("empty.json"), stats_to_json(ComputeStats{}));
   const std::string check =
@@ -66,6 +69,8 @@ TEST(StatsToJson, IsValidJson) {
       "assert all(\"bare_edges\" not in s for s in d[\"solids\"])\n"
       "assert list(d[\"timings\"])[:4] == [\"features\", \"sampling\", \"delaunay\", \"total\"]\n"
       "assert d[\"timings\"][\"we\\\"ird\\\\stage\\n\"] is None\n"
+      "assert d[\"warnings\"] == [\"walls down to 1 thick \\\"here\\\"\", \"second\"]\n"
+      "assert [s[\"thinnest_wall\"] for s in d[\"solids\"]] == [1.5, None]\n"
       "json.load(open(sys.argv[2]))' " +
       dir.file("s.json") + " " + dir.file("empty.json");
   EXPECT_EQ(std::system(check.c_str()), 0) << test::read_file(dir.file("s.json"));

@@ -1,0 +1,26 @@
+// The thinnest wall a sampling shows: where two walls face each other closer than the spacing can
+// carry the medial sheet between them (section 3's density condition fails there), the axis may
+// get holes or extra loops. A cheap check on the samples that lets the user know.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+
+#include "../types.h"
+#include "samples.h"
+
+namespace cadmedial {
+
+struct ThinWall {
+  /// Radius of the smallest inner ball tangent at a face sample through a sample of a facing
+  /// wall: half the wall's thickness there (an upper bound: the samples need not sit opposite).
+  double radius = std::numeric_limits<double>::infinity();
+  Point3 at{0, 0, 0};         ///< the face sample where it was found
+  std::size_t samples = 0;    ///< face samples whose ball is smaller than `reach`
+};
+
+/// Looks for facing walls (outward normals more than 120 degrees apart) within 2 * reach of each
+/// face sample: balls of radius up to `reach` are found.
+ThinWall thinnest_wall(const Samples& samples, double reach);
+
+}  // namespace cadmedial
