@@ -53,6 +53,7 @@ Point3 to_point(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 struct ChainPoint {
   int sample;
   double t;
+  int point = -1;  ///< its edge_point() in Sampler::edge_points_, -1 on corners or where it failed
 };
 
 class Sampler {
@@ -125,10 +126,16 @@ class Sampler {
   }
 
   // The two faces' normals and the local character at an edge sample: what the inner axis
-  // separation needs to tell inside from outside near it.
-  void describe_edge_sample(int id, int e, double t) {
+  // separation needs to tell inside from outside near it. Returns the index of the edge point
+  // kept for the triplets of a convex or mixed edge, or -1.
+  int describe_edge_sample(int id, int e, double t) {
+    int kept = -1;
     try {
       const EdgePoint ep = edge_point(f_, e, t);
+      if (f_.edge_kind[e] == EdgeKind::Convex || f_.edge_kind[e] == EdgeKind::Mixed) {
+        kept = static_cast<int>(edge_points_.size());
+        edge_points_.push_back(ep);
+      }
       out_.normal[id] = to_point(ep.normal[0]);
       out_.normal2[id] = to_point(ep.normal[1]);
       out_.edge_convex[id] = ep.kind == PointKind::Convex ? 1 : ep.kind == PointKind::Concave ? 2 : 0;
@@ -138,6 +145,7 @@ class Sampler {
     } catch (const Standard_Failure&) {
     } catch (const GeometryError&) {
     }
+    return kept;
   }
 
   double curvature_at(int fi, double u, double v) {
@@ -209,8 +217,7 @@ class Sampler {
         for (const auto& [t, tag] : params) {
           const int id = add(to_point(curve.Value(t)), tag, excl);
           out_.edge[id] = e;
-          chain.push_back({id, t});
-          describe_edge_sample(id, e, t);
+          chain.push_back({id, t, describe_edge_sample(id, e, t)});
         }
       } catch (const Standard_Failure& err) {
         throw GeometryError("edge " + std::to_string(e + 1) + ": cannot sample: " + err.GetMessageString());
@@ -279,14 +286,10 @@ class Sampler {
       for (size_t i = 0; i < chain.size(); ++i) {
         const int s = chain[i].sample;
         if (out_.tag[s] == SampleTag::Corner) continue;
-        EdgePoint ep;
-        try {
-          ep = edge_point(f_, e, chain[i].t);
-        } catch (const std::exception&) {
-          continue;
-        } catch (const Standard_Failure&) {
-          continue;
-        }
+        // edge_point(f_, e, chain[i].t) as describe_edge_sample computed it; where it threw there,
+        // it would throw here too.
+        if (chain[i].point < 0) continue;
+        const EdgePoint& ep = edge_points_[chain[i].point];
         if (ep.kind != PointKind::Convex) continue;
         const double d = sp_.triplet;
         int side[2] = {-1, -1};
@@ -502,6 +505,7 @@ class Sampler {
   std::vector<double> ball_radius_;
   std::vector<double> edge_length_;
   std::vector<std::vector<ChainPoint>> chains_;
+  std::vector<EdgePoint> edge_points_;
   std::unordered_map<int, std::vector<std::pair<int, std::array<double, 2>>>> face_points_;
   std::unordered_map<int, std::unique_ptr<BRepAdaptor_Surface>> surfaces_;
   std::unordered_map<int, std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
