@@ -27,6 +27,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include "../errors.h"
+#include "lattice_classifier.h"
 #include "point_grid.h"
 
 namespace cadmedial {
@@ -261,7 +262,7 @@ class Sampler {
     if (std::abs(w.Magnitude() - d) > 1e-6 * d || w.Dot(dir) <= 0.5 * d) return false;
     uv = gp_Pnt2d(u, v);
     q = s;
-    return classifier(fi).Perform(uv) == TopAbs_IN;
+    return inside_face(fi, uv);
   }
 
   gp_Vec outward_normal(int fi, double u, double v) {
@@ -360,10 +361,20 @@ class Sampler {
     }
   }
 
-  void sample_face(int fi, std::mt19937_64& rng, std::uniform_real_distribution<double>& jitter) {
+  // A face's mean metric and its lattice of candidates over its parameter bounds: cells of about
+  // half the smallest local spacing in space (metric and curvature probed on a 13 x 13 grid).
+  struct FacePlan {
+    bool planar = false;
+    double u_scale = 1, v_scale = 1;
+    UvLattice lattice;
+  };
+
+  const FacePlan& face_plan(int fi) {
+    auto found = plans_.find(fi);
+    if (found != plans_.end()) return found->second;
+    FacePlan plan;
     const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
     const BRepAdaptor_Surface& surf = surface(fi);
-    const BRepTopAdaptor_FClass2d& cls = classifier(fi);
     double u0, u1, v0, v1;
     BRepTools::UVBounds(face, u0, u1, v0, v1);
     const bool planar = surf.GetType() == GeomAbs_Plane;
@@ -387,10 +398,9 @@ class Sampler {
             k_max = std::max({k_max, std::abs(props.MaxCurvature()), std::abs(props.MinCurvature())});
         }
       }
-    FaceDomain& dom = out_.faces[fi];
     const double np = (kProbe + 1.0) * (kProbe + 1.0);
-    dom.u_scale = std::max(su_sum / np, 1e-300);
-    dom.v_scale = std::max(sv_sum / np, 1e-300);
+    plan.u_scale = std::max(su_sum / np, 1e-300);
+    plan.v_scale = std::max(sv_sum / np, 1e-300);
     const double r_min = k_max > 0 ? std::clamp(sp_.max_turn_rad / k_max, sp_.min_face, sp_.face) : sp_.face;
     // Candidate step: half the smallest local spacing, in space.
     const double step = 0.5 * r_min;
@@ -402,13 +412,47 @@ class Sampler {
       nu = std::max(1L, static_cast<long>(nu * shrink));
       nvv = std::max(1L, static_cast<long>(nvv * shrink));
     }
-    const double du = (u1 - u0) / nu, dv = (v1 - v0) / nvv;
+    plan.planar = planar;
+    plan.lattice = {u0, v0, (u1 - u0) / nu, (v1 - v0) / nvv, nu, nvv};
+    return plans_.emplace(fi, plan).first->second;
+  }
+
+  // The face's point-in-face answers over its lattice (kept from the triplets to the face's own
+  // sampling).
+  LatticeClassifier& lattice(int fi) {
+    auto& l = lattices_[fi];
+    if (!l) l = std::make_unique<LatticeClassifier>(classifier(fi), surface(fi), face_plan(fi).lattice);
+    return *l;
+  }
+
+  // Exactly classifier(fi).Perform(uv) == TopAbs_IN.
+  bool inside_face(int fi, const gp_Pnt2d& uv) {
+    const LatticeClassifier::Answer a = lattice(fi).classify(uv);
+    if (a != LatticeClassifier::Answer::Ask) return a == LatticeClassifier::Answer::In;
+    return classifier(fi).Perform(uv) == TopAbs_IN;
+  }
+
+  void sample_face(int fi, std::mt19937_64& rng, std::uniform_real_distribution<double>& jitter) {
+    const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
+    const BRepAdaptor_Surface& surf = surface(fi);
+    const BRepTopAdaptor_FClass2d& cls = classifier(fi);
+    const FacePlan& plan = face_plan(fi);
+    const bool planar = plan.planar;
+    FaceDomain& dom = out_.faces[fi];
+    dom.u_scale = plan.u_scale;
+    dom.v_scale = plan.v_scale;
+    const long nu = plan.lattice.nu, nvv = plan.lattice.nv;
+    const double u0 = plan.lattice.u0, v0 = plan.lattice.v0, du = plan.lattice.du, dv = plan.lattice.dv;
+    LatticeClassifier& inside = lattice(fi);
+    BRepLProp_SLProps props(surf, 2, 1e-9);
     const int nf = f_.faces.Extent();
     for (long i = 0; i < nu; ++i) {
       // Per row: one face can take seconds (bench/cancel_latency.py), and a cancel must not wait.
       report(progress_, "sampling", 0.2 + 0.8 * (fi + static_cast<double>(i) / nu) / std::max(1, nf));
       for (long j = 0; j < nvv; ++j) {
         const double u = u0 + du * (i + 0.5 + jitter(rng)), v = v0 + dv * (j + 0.5 + jitter(rng));
+        const LatticeClassifier::Answer where = inside.classify(i, j, gp_Pnt2d(u, v));
+        if (where == LatticeClassifier::Answer::Out) continue;
         gp_Pnt p;
         gp_Vec su, sv;
         surf.D1(u, v, p, su, sv);
@@ -429,7 +473,7 @@ class Sampler {
           return distance2(out_.points[id], c) < ex * ex;
         });
         if (crowded) continue;
-        if (cls.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
+        if (where == LatticeClassifier::Answer::Ask && cls.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
         n.Normalize();
         if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
         const int id = add(c, SampleTag::Face);
@@ -439,6 +483,7 @@ class Sampler {
         face_points_[fi].push_back({id, {u, v}});
       }
     }
+    lattices_.erase(fi);
     build_domain(fi);
   }
 
@@ -509,6 +554,8 @@ class Sampler {
   std::unordered_map<int, std::vector<std::pair<int, std::array<double, 2>>>> face_points_;
   std::unordered_map<int, std::unique_ptr<BRepAdaptor_Surface>> surfaces_;
   std::unordered_map<int, std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
+  std::unordered_map<int, FacePlan> plans_;
+  std::unordered_map<int, std::unique_ptr<LatticeClassifier>> lattices_;
 };
 
 }  // namespace
