@@ -13,7 +13,9 @@ namespace cadmedial {
 /// key, and then a bucket). An open-addressing table (linear probing) maps a key to the cell's
 /// list of ids, kept in insertion order in one flat array. The slot of a key is a hash of its x
 /// and y plus its z, so the three cells of a column that any_near visits in a row are usually
-/// neighbours in memory.
+/// neighbours in memory. The table is kept at most a quarter full: at half full, the runs of
+/// slots of neighbouring columns merge and a lookup probed about 4 extra slots (measured on the
+/// Y-rod mount at 250k samples; under 1 at a quarter, and sampling was about 10 % faster).
 class PointGrid {
  public:
   explicit PointGrid(double cell) : cell_(cell) { slots_.assign(kInitialSlots, Slot{}); }
@@ -22,7 +24,7 @@ class PointGrid {
     const int64_t k = key(cell_of(p[0]), cell_of(p[1]), cell_of(p[2]));
     Slot* s = find_slot(k);
     if (s->key == kEmpty) {
-      if (2 * (used_ + 1) > slots_.size()) {
+      if (4 * (used_ + 1) > slots_.size()) {
         grow();
         s = find_slot(k);
       }
@@ -103,7 +105,7 @@ class PointGrid {
     return (x & 0x1FFFFF) | ((y & 0x1FFFFF) << 21) | ((z & 0x1FFFFF) << 42);
   }
   double cell_;
-  std::vector<Slot> slots_;  // a power of two, at most half full
+  std::vector<Slot> slots_;  // a power of two, at most a quarter full
   size_t used_ = 0;
   std::vector<Entry> entries_;
 };
