@@ -74,8 +74,10 @@ LatticeClassifier::LatticeClassifier(const BRepTopAdaptor_FClass2d& classifier, 
   vmin_ = classifier_.*member(FaceVMin{});
   vmax_ = classifier_.*member(FaceVMax{});
   const BRepTopAdaptor_SeqOfPtr& wires = classifier_.*member(TabClass{});
-  usable_ = true;
-  if (wires.Length() > 0) {
+  // A face without extent in u or v: no cells to speak of.
+  usable_ = lat_.du > 0 && lat_.dv > 0 && std::isfinite(lat_.u0 + lat_.du * lat_.nu) &&
+            std::isfinite(lat_.v0 + lat_.dv * lat_.nv);
+  if (usable_ && wires.Length() > 0) {
     // A wire that could not be made a polygon turns Perform into BRepClass_FaceClassifier on
     // every point (TabOrien(1) == -1); an empty polygon answers "on" everywhere.
     if ((classifier_.*member(TabOrien{}))(1) == -1) usable_ = false;
@@ -198,6 +200,8 @@ LatticeClassifier::State LatticeClassifier::polygon_state(long i, long j, const 
 }
 
 LatticeClassifier::State LatticeClassifier::polygon_state(const gp_Pnt2d& uv) {
+  // Not a point to remember a state by.
+  if (!std::isfinite(uv.X()) || !std::isfinite(uv.Y())) return State::Ask;
   // A point on a side between two cells may go to either: the marks leave a margin around both.
   const double fi = std::floor((uv.X() - lat_.u0) / lat_.du), fj = std::floor((uv.Y() - lat_.v0) / lat_.dv);
   if (fi >= 0 && fi < lat_.nu && fj >= 0 && fj < lat_.nv)
