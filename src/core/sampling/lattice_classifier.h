@@ -27,8 +27,9 @@ struct UvLattice {
 /// from every polygon's bounding box, and for every point in a marked cell. On a periodic
 /// surface Perform retries a point outside at shifted copies; so does this, in the same order.
 ///
-/// Reads the classifier's polygons, which OpenCASCADE keeps private (7.6 and 7.7 build and use
-/// them alike); the classifier must outlive this object.
+/// Reads the classifier's polygons, which OpenCASCADE keeps private. Written from OCC 7.7.0's
+/// BRepTopAdaptor_FClass2d.cxx and CSLib_Class2d.cxx and checked against 7.6.3 (Debian 12) with
+/// CADMEDIAL_VERIFY_LATTICE_CLASSIFIER (see the .cpp). The classifier must outlive this object.
 class LatticeClassifier {
  public:
   enum class Answer : std::uint8_t {
