@@ -3,20 +3,46 @@
 
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "../types.h"
 
 namespace cadmedial {
 
+/// Cells are keyed by their integer coordinates packed 21 bits each (cells 2^21 apart share a
+/// key, and then a bucket). An open-addressing table (linear probing) maps a key to the cell's
+/// list of ids, kept in insertion order in one flat array. The slot of a key is a hash of its x
+/// and y plus its z, so the three cells of a column that any_near visits in a row are usually
+/// neighbours in memory. The table is kept at most a quarter full: at half full, the runs of
+/// slots of neighbouring columns merge and a lookup probed about 4 extra slots (measured on the
+/// Y-rod mount at 250k samples; under 1 at a quarter, and sampling was about 10 % faster).
 class PointGrid {
  public:
-  explicit PointGrid(double cell) : cell_(cell) {}
+  explicit PointGrid(double cell) : cell_(cell) { slots_.assign(kInitialSlots, Slot{}); }
 
-  void insert(const Point3& p, int id) { cells_[key(cell_of(p[0]), cell_of(p[1]), cell_of(p[2]))].push_back(id); }
+  void insert(const Point3& p, int id) {
+    const int64_t k = key(cell_of(p[0]), cell_of(p[1]), cell_of(p[2]));
+    Slot* s = find_slot(k);
+    if (s->key == kEmpty) {
+      if (4 * (used_ + 1) > slots_.size()) {
+        grow();
+        s = find_slot(k);
+      }
+      s->key = k;
+      ++used_;
+    }
+    const int entry = static_cast<int>(entries_.size());
+    entries_.push_back({id, -1});
+    if (s->head < 0)
+      s->head = entry;
+    else
+      entries_[static_cast<size_t>(s->tail)].next = entry;
+    s->tail = entry;
+  }
 
-  /// Calls visit(id) for every inserted point in the cells within `radius` of p (radius <= cell).
+  /// Calls visit(id) for every inserted point in the cells within `radius` of p (radius <= cell),
+  /// p's own cell first, then the others in x, y, z order; a cell's ids in insertion order.
+  /// Stops and returns true as soon as visit returns true.
   template <class Visit>
   bool any_near(const Point3& p, double radius, const Visit& visit) const {
     const int64_t cx = cell_of(p[0]), cy = cell_of(p[1]), cz = cell_of(p[2]);
@@ -27,29 +53,61 @@ class PointGrid {
       for (int64_t y = cy - reach; y <= cy + reach; ++y)
         for (int64_t z = cz - reach; z <= cz + reach; ++z) {
           if (x == cx && y == cy && z == cz) continue;
-          auto it = cells_.find(key(x, y, z));
-          if (it == cells_.end()) continue;
-          for (int id : it->second)
-            if (visit(id)) return true;
+          if (visit_cell(key(x, y, z), visit)) return true;
         }
     return false;
   }
 
  private:
+  static constexpr int64_t kEmpty = -1;  // keys are non-negative (63 bits)
+  static constexpr size_t kInitialSlots = 1024;
+  struct Slot {
+    int64_t key = kEmpty;
+    int head = -1, tail = -1;  // first and last entry of the cell
+  };
+  struct Entry {
+    int id, next;
+  };
+
   template <class Visit>
   bool visit_cell(int64_t k, const Visit& visit) const {
-    auto it = cells_.find(k);
-    if (it == cells_.end()) return false;
-    for (int id : it->second)
-      if (visit(id)) return true;
+    const Slot* s = find_slot(k);
+    for (int e = s->head; e >= 0; e = entries_[static_cast<size_t>(e)].next)
+      if (visit(entries_[static_cast<size_t>(e)].id)) return true;
     return false;
   }
+
+  // The slot holding key k, or the empty slot where it would go.
+  Slot* find_slot(int64_t k) { return const_cast<Slot*>(static_cast<const PointGrid*>(this)->find_slot(k)); }
+  const Slot* find_slot(int64_t k) const {
+    const size_t mask = slots_.size() - 1;
+    size_t i = home(k) & mask;
+    while (slots_[i].key != k && slots_[i].key != kEmpty) i = (i + 1) & mask;
+    return &slots_[i];
+  }
+  static size_t home(int64_t k) {
+    // splitmix64's finaliser on the x, y bits, plus z.
+    uint64_t h = static_cast<uint64_t>(k) & ((uint64_t{1} << 42) - 1);
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+    h ^= h >> 31;
+    return static_cast<size_t>(h + (static_cast<uint64_t>(k) >> 42));
+  }
+  void grow() {
+    std::vector<Slot> old(slots_.size() * 2, Slot{});
+    old.swap(slots_);
+    for (const Slot& s : old)
+      if (s.key != kEmpty) *find_slot(s.key) = s;
+  }
+
   int64_t cell_of(double v) const { return static_cast<int64_t>(std::floor(v / cell_)); }
   static int64_t key(int64_t x, int64_t y, int64_t z) {
     return (x & 0x1FFFFF) | ((y & 0x1FFFFF) << 21) | ((z & 0x1FFFFF) << 42);
   }
   double cell_;
-  std::unordered_map<int64_t, std::vector<int>> cells_;
+  std::vector<Slot> slots_;  // a power of two, at most a quarter full
+  size_t used_ = 0;
+  std::vector<Entry> entries_;
 };
 
 inline double distance2(const Point3& a, const Point3& b) {

@@ -27,6 +27,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include "../errors.h"
+#include "lattice_classifier.h"
 #include "point_grid.h"
 
 namespace cadmedial {
@@ -53,6 +54,7 @@ Point3 to_point(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 struct ChainPoint {
   int sample;
   double t;
+  int point = -1;  ///< its edge_point() in Sampler::edge_points_, -1 on corners or where it failed
 };
 
 class Sampler {
@@ -125,10 +127,16 @@ class Sampler {
   }
 
   // The two faces' normals and the local character at an edge sample: what the inner axis
-  // separation needs to tell inside from outside near it.
-  void describe_edge_sample(int id, int e, double t) {
+  // separation needs to tell inside from outside near it. Returns the index of the edge point
+  // kept for the triplets of a convex or mixed edge, or -1.
+  int describe_edge_sample(int id, int e, double t) {
+    int kept = -1;
     try {
       const EdgePoint ep = edge_point(f_, e, t);
+      if (f_.edge_kind[e] == EdgeKind::Convex || f_.edge_kind[e] == EdgeKind::Mixed) {
+        kept = static_cast<int>(edge_points_.size());
+        edge_points_.push_back(ep);
+      }
       out_.normal[id] = to_point(ep.normal[0]);
       out_.normal2[id] = to_point(ep.normal[1]);
       out_.edge_convex[id] = ep.kind == PointKind::Convex ? 1 : ep.kind == PointKind::Concave ? 2 : 0;
@@ -138,6 +146,7 @@ class Sampler {
     } catch (const Standard_Failure&) {
     } catch (const GeometryError&) {
     }
+    return kept;
   }
 
   double curvature_at(int fi, double u, double v) {
@@ -209,8 +218,7 @@ class Sampler {
         for (const auto& [t, tag] : params) {
           const int id = add(to_point(curve.Value(t)), tag, excl);
           out_.edge[id] = e;
-          chain.push_back({id, t});
-          describe_edge_sample(id, e, t);
+          chain.push_back({id, t, describe_edge_sample(id, e, t)});
         }
       } catch (const Standard_Failure& err) {
         throw GeometryError("edge " + std::to_string(e + 1) + ": cannot sample: " + err.GetMessageString());
@@ -254,7 +262,7 @@ class Sampler {
     if (std::abs(w.Magnitude() - d) > 1e-6 * d || w.Dot(dir) <= 0.5 * d) return false;
     uv = gp_Pnt2d(u, v);
     q = s;
-    return classifier(fi).Perform(uv) == TopAbs_IN;
+    return inside_face(fi, uv);
   }
 
   gp_Vec outward_normal(int fi, double u, double v) {
@@ -279,14 +287,10 @@ class Sampler {
       for (size_t i = 0; i < chain.size(); ++i) {
         const int s = chain[i].sample;
         if (out_.tag[s] == SampleTag::Corner) continue;
-        EdgePoint ep;
-        try {
-          ep = edge_point(f_, e, chain[i].t);
-        } catch (const std::exception&) {
-          continue;
-        } catch (const Standard_Failure&) {
-          continue;
-        }
+        // edge_point(f_, e, chain[i].t) as describe_edge_sample computed it; where it threw there,
+        // it would throw here too.
+        if (chain[i].point < 0) continue;
+        const EdgePoint& ep = edge_points_[chain[i].point];
         if (ep.kind != PointKind::Convex) continue;
         const double d = sp_.triplet;
         int side[2] = {-1, -1};
@@ -357,10 +361,20 @@ class Sampler {
     }
   }
 
-  void sample_face(int fi, std::mt19937_64& rng, std::uniform_real_distribution<double>& jitter) {
+  // A face's mean metric and its lattice of candidates over its parameter bounds: cells of about
+  // half the smallest local spacing in space (metric and curvature probed on a 13 x 13 grid).
+  struct FacePlan {
+    bool planar = false;
+    double u_scale = 1, v_scale = 1;
+    UvLattice lattice;
+  };
+
+  const FacePlan& face_plan(int fi) {
+    auto found = plans_.find(fi);
+    if (found != plans_.end()) return found->second;
+    FacePlan plan;
     const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
     const BRepAdaptor_Surface& surf = surface(fi);
-    const BRepTopAdaptor_FClass2d& cls = classifier(fi);
     double u0, u1, v0, v1;
     BRepTools::UVBounds(face, u0, u1, v0, v1);
     const bool planar = surf.GetType() == GeomAbs_Plane;
@@ -384,10 +398,9 @@ class Sampler {
             k_max = std::max({k_max, std::abs(props.MaxCurvature()), std::abs(props.MinCurvature())});
         }
       }
-    FaceDomain& dom = out_.faces[fi];
     const double np = (kProbe + 1.0) * (kProbe + 1.0);
-    dom.u_scale = std::max(su_sum / np, 1e-300);
-    dom.v_scale = std::max(sv_sum / np, 1e-300);
+    plan.u_scale = std::max(su_sum / np, 1e-300);
+    plan.v_scale = std::max(sv_sum / np, 1e-300);
     const double r_min = k_max > 0 ? std::clamp(sp_.max_turn_rad / k_max, sp_.min_face, sp_.face) : sp_.face;
     // Candidate step: half the smallest local spacing, in space.
     const double step = 0.5 * r_min;
@@ -399,13 +412,47 @@ class Sampler {
       nu = std::max(1L, static_cast<long>(nu * shrink));
       nvv = std::max(1L, static_cast<long>(nvv * shrink));
     }
-    const double du = (u1 - u0) / nu, dv = (v1 - v0) / nvv;
+    plan.planar = planar;
+    plan.lattice = {u0, v0, (u1 - u0) / nu, (v1 - v0) / nvv, nu, nvv};
+    return plans_.emplace(fi, plan).first->second;
+  }
+
+  // The face's point-in-face answers over its lattice (kept from the triplets to the face's own
+  // sampling).
+  LatticeClassifier& lattice(int fi) {
+    auto& l = lattices_[fi];
+    if (!l) l = std::make_unique<LatticeClassifier>(classifier(fi), surface(fi), face_plan(fi).lattice);
+    return *l;
+  }
+
+  // Exactly classifier(fi).Perform(uv) == TopAbs_IN.
+  bool inside_face(int fi, const gp_Pnt2d& uv) {
+    const LatticeClassifier::Answer a = lattice(fi).classify(uv);
+    if (a != LatticeClassifier::Answer::Ask) return a == LatticeClassifier::Answer::In;
+    return classifier(fi).Perform(uv) == TopAbs_IN;
+  }
+
+  void sample_face(int fi, std::mt19937_64& rng, std::uniform_real_distribution<double>& jitter) {
+    const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
+    const BRepAdaptor_Surface& surf = surface(fi);
+    const BRepTopAdaptor_FClass2d& cls = classifier(fi);
+    const FacePlan& plan = face_plan(fi);
+    const bool planar = plan.planar;
+    FaceDomain& dom = out_.faces[fi];
+    dom.u_scale = plan.u_scale;
+    dom.v_scale = plan.v_scale;
+    const long nu = plan.lattice.nu, nvv = plan.lattice.nv;
+    const double u0 = plan.lattice.u0, v0 = plan.lattice.v0, du = plan.lattice.du, dv = plan.lattice.dv;
+    LatticeClassifier& inside = lattice(fi);
+    BRepLProp_SLProps props(surf, 2, 1e-9);
     const int nf = f_.faces.Extent();
     for (long i = 0; i < nu; ++i) {
       // Per row: one face can take seconds (bench/cancel_latency.py), and a cancel must not wait.
       report(progress_, "sampling", 0.2 + 0.8 * (fi + static_cast<double>(i) / nu) / std::max(1, nf));
       for (long j = 0; j < nvv; ++j) {
         const double u = u0 + du * (i + 0.5 + jitter(rng)), v = v0 + dv * (j + 0.5 + jitter(rng));
+        const LatticeClassifier::Answer where = inside.classify(i, j, gp_Pnt2d(u, v));
+        if (where == LatticeClassifier::Answer::Out) continue;
         gp_Pnt p;
         gp_Vec su, sv;
         surf.D1(u, v, p, su, sv);
@@ -426,7 +473,7 @@ class Sampler {
           return distance2(out_.points[id], c) < ex * ex;
         });
         if (crowded) continue;
-        if (cls.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
+        if (where == LatticeClassifier::Answer::Ask && cls.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
         n.Normalize();
         if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
         const int id = add(c, SampleTag::Face);
@@ -436,6 +483,7 @@ class Sampler {
         face_points_[fi].push_back({id, {u, v}});
       }
     }
+    lattices_.erase(fi);
     build_domain(fi);
   }
 
@@ -502,9 +550,12 @@ class Sampler {
   std::vector<double> ball_radius_;
   std::vector<double> edge_length_;
   std::vector<std::vector<ChainPoint>> chains_;
+  std::vector<EdgePoint> edge_points_;
   std::unordered_map<int, std::vector<std::pair<int, std::array<double, 2>>>> face_points_;
   std::unordered_map<int, std::unique_ptr<BRepAdaptor_Surface>> surfaces_;
   std::unordered_map<int, std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
+  std::unordered_map<int, FacePlan> plans_;
+  std::unordered_map<int, std::unique_ptr<LatticeClassifier>> lattices_;
 };
 
 }  // namespace
