@@ -46,83 +46,81 @@ TopAbs_Orientation orientation_in_face(const TopoDS_Edge& edge, const TopoDS_Fac
   return TopAbs_FORWARD;
 }
 
-struct FaceSide {
-  gp_Pnt point;
-  gp_Vec normal, inward;
-  gp_Pnt2d uv;
-};
+}  // namespace
 
-// `inset` > 0: the normal and the inward direction are taken that far inside the face (a
-// fraction of its parameter range, across the edge), where a collapsed boundary has a normal.
-FaceSide face_side(const TopoDS_Edge& edge, const TopoDS_Face& face, double t, const gp_Vec& tangent,
-                   double inset = 0.0) {
-  const TopAbs_Orientation ori = orientation_in_face(edge, face);
-  const TopoDS_Face fwd = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+EdgeGeometry::EdgeGeometry(const Features& features, int edge_index) : smooth_angle_deg_(features.smooth_angle_deg) {
+  const TopoDS_Edge& edge = TopoDS::Edge(features.edges(edge_index + 1));
   double first = 0, last = 0;
-  Handle(Geom2d_Curve) pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(edge.Oriented(ori)), fwd, first, last);
-  if (pcurve.IsNull()) throw GeometryError("edge has no curve on its face");
-  gp_Pnt2d uv;
-  gp_Vec2d duv;
-  pcurve->D1(t, uv, duv);
-  // Left of the traversal direction, in the parameter plane.
-  const double sign = (ori == TopAbs_REVERSED) ? -1.0 : 1.0;
-  const gp_Vec2d left(-duv.Y() * sign, duv.X() * sign);
-  BRepAdaptor_Surface surf(fwd, Standard_False);
-  gp_Pnt p;
-  gp_Vec su, sv;
-  surf.D1(uv.X(), uv.Y(), p, su, sv);
-  FaceSide side;
-  side.point = p;
-  side.uv = uv;
-  if (inset > 0 && left.Magnitude() > 1e-300) {
-    double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-    BRepTools::UVBounds(fwd, u0, u1, v0, v1);
-    const gp_Vec2d step = left.Normalized() * (inset * std::max(u1 - u0, v1 - v0));
-    gp_Pnt q;
-    surf.D1(uv.X() + step.X(), uv.Y() + step.Y(), q, su, sv);
+  // BRep_Tool::Curve already applies the edge's location.
+  curve_ = BRep_Tool::Curve(edge, first, last);
+  for (int i = 0; i < 2; ++i) {
+    const TopoDS_Face& face = TopoDS::Face(features.faces(features.edge_faces[edge_index][i] + 1));
+    Side& side = side_[i];
+    side.in_face = orientation_in_face(edge, face);
+    side.face_reversed = face.Orientation() == TopAbs_REVERSED;
+    const TopoDS_Face fwd = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+    side.pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(edge.Oriented(side.in_face)), fwd, first, last);
+    side.surface = std::make_shared<BRepAdaptor_Surface>(fwd, Standard_False);
+    // Only the inset normals need it: a face without bounds still has normals on its edges.
+    try {
+      double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
+      BRepTools::UVBounds(fwd, u0, u1, v0, v1);
+      side.uv_extent = std::max(u1 - u0, v1 - v0);
+    } catch (const Standard_Failure&) {
+      side.uv_extent = 0.0;
+    }
   }
-  gp_Vec n = su.Crossed(sv);
-  if (n.Magnitude() < 1e-300) throw GeometryError("face normal undefined on edge");
-  n.Normalize();
-  if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
-  side.normal = n;
-  gp_Vec in = su * left.X() + sv * left.Y();
-  in -= tangent * in.Dot(tangent);
-  in -= n * in.Dot(n);
-  if (in.Magnitude() < 1e-300) throw GeometryError("face direction undefined on edge");
-  side.inward = in.Normalized();
-  return side;
 }
 
-EdgePoint edge_point_inset(const Features& features, int edge_index, double t, double inset) {
-  const TopoDS_Edge& edge = TopoDS::Edge(features.edges(edge_index + 1));
+EdgePoint EdgeGeometry::at(double t, double inset) const {
   EdgePoint ep;
-  double first = 0, last = 0;
-  Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
   gp_Vec d1;
-  if (!curve.IsNull()) {
+  if (!curve_.IsNull()) {
     gp_Pnt p;
-    curve->D1(t, p, d1);
-    // BRep_Tool::Curve already applies the edge's location.
+    curve_->D1(t, p, d1);
     ep.point = p;
   }
   if (d1.Magnitude() < 1e-300) throw GeometryError("edge tangent undefined");
   ep.tangent = d1.Normalized();
-  const auto& ef = features.edge_faces[edge_index];
   for (int i = 0; i < 2; ++i) {
-    const TopoDS_Face& face = TopoDS::Face(features.faces(ef[i] + 1));
-    FaceSide side = face_side(edge, face, t, ep.tangent, inset);
-    ep.normal[i] = side.normal;
-    ep.inward[i] = side.inward;
-    ep.uv[i] = side.uv;
-    if (curve.IsNull()) ep.point = side.point;
+    // The edge as the face's FORWARD wires traverse it: material lies on the left of its pcurve
+    // in the parameter plane, whatever the face's own orientation.
+    const Side& side = side_[i];
+    if (side.pcurve.IsNull()) throw GeometryError("edge has no curve on its face");
+    gp_Pnt2d uv;
+    gp_Vec2d duv;
+    side.pcurve->D1(t, uv, duv);
+    const double sign = (side.in_face == TopAbs_REVERSED) ? -1.0 : 1.0;
+    const gp_Vec2d left(-duv.Y() * sign, duv.X() * sign);
+    gp_Pnt p;
+    gp_Vec su, sv;
+    side.surface->D1(uv.X(), uv.Y(), p, su, sv);
+    // inset > 0: the normal and the inward direction are taken that far inside the face, across
+    // the edge, where a collapsed boundary has a normal.
+    if (inset > 0 && left.Magnitude() > 1e-300) {
+      const gp_Vec2d step = left.Normalized() * (inset * side.uv_extent);
+      gp_Pnt q;
+      side.surface->D1(uv.X() + step.X(), uv.Y() + step.Y(), q, su, sv);
+    }
+    gp_Vec n = su.Crossed(sv);
+    if (n.Magnitude() < 1e-300) throw GeometryError("face normal undefined on edge");
+    n.Normalize();
+    if (side.face_reversed) n.Reverse();
+    gp_Vec in = su * left.X() + sv * left.Y();
+    in -= ep.tangent * in.Dot(ep.tangent);
+    in -= n * in.Dot(n);
+    if (in.Magnitude() < 1e-300) throw GeometryError("face direction undefined on edge");
+    ep.normal[i] = n;
+    ep.inward[i] = in.Normalized();
+    ep.uv[i] = uv;
+    if (curve_.IsNull()) ep.point = p;
   }
   const double cosang = std::clamp(ep.normal[0].Dot(ep.normal[1]), -1.0, 1.0);
   const double angle = std::acos(cosang) * 180.0 / kPi;
   // Face 0 bends away from face 1's outward side at a convex edge: its inward direction points
   // against face 1's normal (and symmetrically).
   const double bend = ep.inward[0].Dot(ep.normal[1]) + ep.inward[1].Dot(ep.normal[0]);
-  if (angle < features.smooth_angle_deg) {
+  if (angle < smooth_angle_deg_) {
     ep.kind = PointKind::Smooth;
     ep.dihedral_deg = 180.0;
   } else if (bend < 0) {
@@ -135,10 +133,8 @@ EdgePoint edge_point_inset(const Features& features, int edge_index, double t, d
   return ep;
 }
 
-}  // namespace
-
 EdgePoint edge_point(const Features& features, int edge_index, double t) {
-  return edge_point_inset(features, edge_index, t, 0.0);
+  return EdgeGeometry(features, edge_index).at(t);
 }
 
 namespace {
@@ -153,11 +149,12 @@ Votes vote_along(const Features& f, int e, double first, double last, double ins
   // Ends and interior: an edge can change character along its length (a blend that runs out).
   constexpr int kPoints = 9;
   Votes votes;
+  const EdgeGeometry geometry(f, e);
   for (int i = 0; i < kPoints; ++i) {
     const double t = first + (last - first) * i / (kPoints - 1);
     PointKind k;
     try {
-      k = edge_point_inset(f, e, t, inset).kind;
+      k = geometry.at(t, inset).kind;
     } catch (const GeometryError&) {
       continue;
     }

@@ -4,8 +4,12 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include <BRepAdaptor_Surface.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom_Curve.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
@@ -61,5 +65,27 @@ Features classify_features(const TopoDS_Solid& solid, double smooth_angle_deg = 
 
 /// Geometry of edge `edge_index` (0-based) and its two faces at edge parameter t.
 EdgePoint edge_point(const Features& features, int edge_index, double t);
+
+/// edge_point at many parameters of one edge: its curve, pcurves, orientations in its faces and
+/// the faces' surfaces are looked up once (the sampler asks at every edge sample).
+class EdgeGeometry {
+ public:
+  EdgeGeometry(const Features& features, int edge_index);
+  /// edge_point(features, edge_index, t); `inset` > 0 takes the normals that far inside the faces
+  /// (a fraction of their parameter range), where a collapsed boundary has one.
+  EdgePoint at(double t, double inset = 0.0) const;
+
+ private:
+  struct Side {
+    TopAbs_Orientation in_face = TopAbs_FORWARD;  ///< the edge's orientation in the face's wires
+    bool face_reversed = false;
+    Handle(Geom2d_Curve) pcurve;
+    std::shared_ptr<BRepAdaptor_Surface> surface;  ///< of the face taken FORWARD
+    double uv_extent = 0.0;                        ///< larger side of its parameter box
+  };
+  double smooth_angle_deg_;
+  Handle(Geom_Curve) curve_;
+  Side side_[2];
+};
 
 }  // namespace cadmedial
