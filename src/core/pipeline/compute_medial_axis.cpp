@@ -37,12 +37,12 @@ struct Measure {
   double diag = 0;
 };
 
-Measure measure(const std::vector<TopoDS_Solid>& solids) {
+Measure measure(const std::vector<TopoDS_Solid>& solids, const std::vector<Features>& features) {
   Measure m;
   Bnd_Box box;
-  for (const TopoDS_Solid& s : solids) {
-    m.solids.push_back(measure_solid(s, classify_features(s)));
-    BRepBndLib::Add(s, box);
+  for (size_t i = 0; i < solids.size(); ++i) {
+    m.solids.push_back(measure_solid(solids[i], features[i]));
+    BRepBndLib::Add(solids[i], box);
   }
   if (!box.IsVoid()) m.diag = std::sqrt(box.SquareExtent());
   return m;
@@ -144,9 +144,8 @@ std::vector<Samples> sample_solids(const std::vector<TopoDS_Solid>& solids, cons
 // Facing walls closer than two spacings: the Voronoi sheet between them is only as good as the
 // samples across the wall (hardening.md: a rib narrower than h leaves holes in its sheet), and
 // nothing else in the result would say so.
-void warn_of_thin_walls(const Samples& samples, double spacing, int solid, int solids, SolidStats& ss,
+void warn_of_thin_walls(const ThinWall& w, double spacing, int solid, int solids, SolidStats& ss,
                         std::vector<std::string>& warnings) {
-  const ThinWall w = thinnest_wall(samples, 2.0 * spacing);
   ss.thinnest_wall = 2.0 * w.radius;
   if (!(w.radius < spacing)) return;
   std::ostringstream msg;
@@ -167,9 +166,9 @@ SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& para
   try {
     // The preview must match the compute: sample as compute_medial_axis does and count.
     const std::vector<TopoDS_Solid> solids = extract_solids(shape);
-    SamplingPlan sp = plan(measure(solids), params);
     std::vector<Features> features;
     for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
+    SamplingPlan sp = plan(measure(solids, features), params);
     std::size_t count = 0;
     for (const Samples& s : sample_solids(solids, features, params, sp.spacing, {})) count += s.size();
     sp.estimated_samples = count;
@@ -188,8 +187,6 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
     auto t0 = Clock::now();
     report(progress, "reading", 0.0);
     const std::vector<TopoDS_Solid> solids = extract_solids(shape);
-    const Measure m = measure(solids);
-    const SamplingPlan sp = plan(m, params.sampling);
     add_timing(stats.timings, "setup", seconds_since(t0));
     const int n = static_cast<int>(solids.size());
 
@@ -198,6 +195,12 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
     std::vector<Features> features;
     for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
     add_timing(stats.timings, "features", seconds_since(t0));
+
+    // The plan measures the solids with their features (a second classification cost as much).
+    t0 = Clock::now();
+    const Measure m = measure(solids, features);
+    const SamplingPlan sp = plan(m, params.sampling);
+    add_timing(stats.timings, "setup", seconds_since(t0));
 
     t0 = Clock::now();
     double spacing = sp.spacing;
@@ -220,19 +223,20 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       }
       for (bool c : features[i].nonconcave_corner) ss.nonconcave_corners += c;
       ss.samples = samples[i].size();
-      warn_of_thin_walls(samples[i], spacing, i, n, ss, stats.warnings);
 
       // The face-by-face reconstruction runs on a second thread while CGAL triangulates (it needs
-      // only the samples; the selection after the triangulation waits for it). No progress
-      // reports from there: the callback may hold Python's lock. Its stage time overlaps
-      // "delaunay".
+      // only the samples; the selection after the triangulation waits for it), then the thin-wall
+      // check. No progress reports from there: the callback may hold Python's lock. Its stage
+      // time overlaps "delaunay".
       report(sub, "reconstruction", 0.0);
       double reconstruction_seconds = 0;
+      ThinWall thin;
       std::shared_future<Umbrellas> umbrellas =
-          std::async(std::launch::async, [&s = samples[i], &reconstruction_seconds] {
+          std::async(std::launch::async, [&s = samples[i], &reconstruction_seconds, &thin, spacing] {
             const auto start = Clock::now();
             Umbrellas u = reconstruct_faces(s);
             reconstruction_seconds = seconds_since(start);
+            thin = thinnest_wall(s, spacing);
             return u;
           }).share();
 
@@ -240,6 +244,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9));
       MedialAxisStats ms;
       const MedialMesh mesh = medial_axis(samples[i], umbrellas, params.medial, inside, i, &ms, sub);
+      warn_of_thin_walls(thin, spacing, i, n, ss, stats.warnings);
       add_timing(stats.timings, "reconstruction", reconstruction_seconds);
       for (const auto& [stage, s] : ms.timings) add_timing(stats.timings, stage, s);
       ss.vertices = mesh.num_vertices();

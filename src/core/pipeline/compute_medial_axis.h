@@ -27,7 +27,7 @@ struct SolidStats {
   std::size_t edges = 0;           ///< output edges: 1-D parts of the axis that no face carries
   std::size_t unattached_faces = 0;  ///< completion triangles left out because they would close a loop
   long euler_characteristic = 0;   ///< V - E + F of the output; the solid's when the topology is right
-  /// Thickness of the thinnest wall the samples show (thinnest_wall), if under 4 spacings, else
+  /// Thickness of the thinnest wall the samples show (thinnest_wall), if under 2 spacings, else
   /// infinity.
   double thinnest_wall = 0.0;
   std::size_t exact_inside_tests = 0;  ///< Voronoi vertices the B-rep classifier had to settle

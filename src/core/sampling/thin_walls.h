@@ -14,13 +14,14 @@ namespace cadmedial {
 struct ThinWall {
   /// Radius of the smallest inner ball tangent at a face sample through a sample of a facing
   /// wall: half the wall's thickness there (an upper bound: the samples need not sit opposite).
+  /// Only balls smaller than the spacing are looked for: infinity when there is none.
   double radius = std::numeric_limits<double>::infinity();
   Point3 at{0, 0, 0};         ///< the face sample where it was found
-  std::size_t samples = 0;    ///< face samples whose ball is smaller than `reach`
+  std::size_t samples = 0;    ///< face samples with such a ball
 };
 
-/// Looks for facing walls (outward normals more than 120 degrees apart) within 2 * reach of each
-/// face sample: balls of radius up to `reach` are found.
-ThinWall thinnest_wall(const Samples& samples, double reach);
+/// Looks for facing walls (outward normals more than 120 degrees apart) within two spacings of
+/// each face sample farther than a spacing from every convex-edge sample.
+ThinWall thinnest_wall(const Samples& samples, double spacing);
 
 }  // namespace cadmedial

@@ -16,7 +16,7 @@ namespace cadmedial {
 namespace {
 
 ThinWall thin_wall_of(const TopoDS_Solid& solid, double spacing) {
-  return thinnest_wall(sample_solid(solid, classify_features(solid), spacing), 2.0 * spacing);
+  return thinnest_wall(sample_solid(solid, classify_features(solid), spacing), spacing);
 }
 
 TEST(ThinWalls, APlateThinnerThanTwoSpacingsShowsItsHalfThickness) {
@@ -29,7 +29,7 @@ TEST(ThinWalls, APlateThinnerThanTwoSpacingsShowsItsHalfThickness) {
   EXPECT_GT(w.samples, 100u);  // the whole plate is thin, not one spot
 }
 
-TEST(ThinWalls, WallsFartherApartThanFourSpacingsAreNotSeen) {
+TEST(ThinWalls, WallsFartherApartThanTwoSpacingsAreNotSeen) {
   const ThinWall w = thin_wall_of(test::make_box(20, 20, 20), 1.5);
   EXPECT_TRUE(std::isinf(w.radius)) << w.radius;
   EXPECT_EQ(w.samples, 0u);
