@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <atomic>
 #include <future>
 #include <map>
 #include <sstream>
@@ -228,17 +229,25 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       // only the samples; the selection after the triangulation waits for it), then the thin-wall
       // check. No progress reports from there: the callback may hold Python's lock. Its stage
       // time overlaps "delaunay".
+      // When the main thread gives up (cancelled, or an error), the worker stops at its next
+      // progress check instead of finishing its work: the future's destructor waits for it.
       report(sub, "reconstruction", 0.0);
       double reconstruction_seconds = 0;
       ThinWall thin;
+      std::atomic<bool> abandoned{false};
+      const Progress worker = [&abandoned](const std::string&, double) { return !abandoned.load(); };
       std::shared_future<Umbrellas> umbrellas =
-          std::async(std::launch::async, [&s = samples[i], &reconstruction_seconds, &thin, spacing] {
+          std::async(std::launch::async, [&s = samples[i], &reconstruction_seconds, &thin, &worker, spacing] {
             const auto start = Clock::now();
-            Umbrellas u = reconstruct_faces(s);
+            Umbrellas u = reconstruct_faces(s, worker);
             reconstruction_seconds = seconds_since(start);
-            thin = thinnest_wall(s, spacing);
+            thin = thinnest_wall(s, spacing, worker);
             return u;
           }).share();
+      const struct Abandon {
+        std::atomic<bool>& flag;
+        ~Abandon() { flag = true; }
+      } abandon_on_exit{abandoned};
 
       // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt.
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9));

@@ -15,7 +15,7 @@ bool on_face(const Samples& s, std::size_t i) { return s.tag[i] == SampleTag::Fa
 
 }  // namespace
 
-ThinWall thinnest_wall(const Samples& s, double spacing) {
+ThinWall thinnest_wall(const Samples& s, double spacing, const Progress& progress) {
   // The ball tangent at p (outward normal n) through q has radius |q - p|^2 / (2 (p - q).n): the
   // shrinking-ball estimate of the medial radius at p. Only a facing wall counts: across a convex
   // or concave edge the ball shrinks too, but there the axis meets the edge by construction. A
@@ -32,6 +32,7 @@ ThinWall thinnest_wall(const Samples& s, double spacing) {
   }
   const double spacing2 = spacing * spacing, reach2 = reach * reach;
   for (std::size_t i = 0; i < s.size(); ++i) {
+    if (i % 4096 == 0) report(progress, "thin walls", static_cast<double>(i) / s.size());
     if (!on_face(s, i)) continue;
     const Point3 &p = s.points[i], &n = s.normal[i];
     if (convex.any_near(p, spacing, [&](int j) { return distance2(s.points[j], p) < spacing2; })) continue;

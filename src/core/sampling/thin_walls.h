@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "../progress.h"
 #include "../types.h"
 #include "samples.h"
 
@@ -22,6 +23,7 @@ struct ThinWall {
 
 /// Looks for facing walls (outward normals more than 120 degrees apart) within two spacings of
 /// each face sample farther than a spacing from every convex-edge sample.
-ThinWall thinnest_wall(const Samples& samples, double spacing);
+/// Progress is reported (and so can cancel) every few thousand samples.
+ThinWall thinnest_wall(const Samples& samples, double spacing, const Progress& progress = {});
 
 }  // namespace cadmedial
