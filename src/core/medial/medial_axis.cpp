@@ -1,6 +1,7 @@
 #include "medial_axis.h"
 
 #include <chrono>
+#include <future>
 
 #include "../errors.h"
 #include "delaunay_3.h"
@@ -42,8 +43,14 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
   const Umbrellas pole_umbrellas = params.plain_medial ? umbrellas_from_poles(dt, samples.size()) : Umbrellas();
   const Selection sel(samples, params.plain_medial ? pole_umbrellas : umbrellas, params);
   MedialComplex mc;
-  number_cells(dt, rank, mc);
-  select_facets(sel, mc, st, progress, !params.plain_medial);
+  const std::vector<Cell> cells = number_cells(dt, rank, mc);
+  {
+    // The circumcentres on the second core while the selection walks the cells (it needs only
+    // their samples and neighbours). No progress from there; the future waits for it on any exit.
+    std::future<void> centers = std::async(std::launch::async, [&cells, &mc] { cell_centers(cells, mc); });
+    select_facets(sel, mc, st, progress, !params.plain_medial);
+    centers.get();
+  }
   st.timings.push_back({"selection", seconds_since(t0)});
 
   t0 = Clock::now();

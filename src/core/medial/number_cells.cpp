@@ -5,7 +5,7 @@
 
 namespace cadmedial::internal {
 
-void number_cells(const Delaunay& dt, const std::vector<int>& rank, MedialComplex& mc) {
+std::vector<Cell> number_cells(const Delaunay& dt, const std::vector<int>& rank, MedialComplex& mc) {
   // A counting sort of the cells by their earliest-inserted sample: the insertion followed a
   // Hilbert curve, so this order is spatially coherent; CGAL's container order is not (cells are
   // freed and reused during insertion).
@@ -36,6 +36,13 @@ void number_cells(const Delaunay& dt, const std::vector<int>& rank, MedialComple
       const Cell nb = c->neighbor(j);
       mc.cell_neighbors[id][j] = dt.is_infinite(nb) ? -1 : nb->info().id;
     }
+  }
+  return cells;
+}
+
+void cell_centers(const std::vector<Cell>& cells, MedialComplex& mc) {
+  for (std::size_t id = 0; id < cells.size(); ++id) {
+    const Cell& c = cells[id];
     const K::Point_3 x = CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
                                             c->vertex(3)->point());
     mc.centers[id] = {x.x(), x.y(), x.z()};
