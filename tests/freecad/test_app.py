@@ -261,3 +261,18 @@ def test_bad_shape_is_refused_and_adds_nothing(doc, name, fragment):
     with pytest.raises(cadmedial.InvalidInput, match=fragment):
         medial_app.make_medial_axis(part, samples=SAMPLES)
     assert [o.Name for o in doc.Objects] == names
+
+
+def test_walls_thinner_than_two_spacings_are_reported_as_a_warning(doc, capfd):
+    # The box is 10 thick (medial radius 5): under two spacings of 6, not of 3.
+    box = add_box(doc)
+    capfd.readouterr()
+    coarse = medial_app.make_medial_axis(box, spacing=6.0)
+    out, err = capfd.readouterr()
+    assert coarse.Status == "ok"
+    assert "thinner than two sample spacings" in out + err
+    coarse.Spacing = 3.0
+    doc.recompute()
+    out, err = capfd.readouterr()
+    assert coarse.Status == "ok"
+    assert "thinner than two sample spacings" not in out + err
