@@ -225,12 +225,11 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       for (bool c : features[i].nonconcave_corner) ss.nonconcave_corners += c;
       ss.samples = samples[i].size();
 
-      // The face-by-face reconstruction runs on a second thread while CGAL triangulates (it needs
-      // only the samples; the selection after the triangulation waits for it), then the thin-wall
-      // check. No progress reports from there: the callback may hold Python's lock. Its stage
-      // time overlaps "delaunay".
-      // When the main thread gives up (cancelled, or an error), the worker stops at its next
-      // progress check instead of finishing its work: the future's destructor waits for it.
+      // The face-by-face reconstruction, then the thin-wall check, run on a second thread while
+      // CGAL triangulates (they need only the samples; the selection waits for them); their time
+      // overlaps "delaunay". The worker does not call the user's progress callback (it may hold
+      // Python's lock); it checks a flag the main thread sets when it gives up (cancel, error),
+      // so the future's destructor, which waits for it, does not wait long.
       report(sub, "reconstruction", 0.0);
       double reconstruction_seconds = 0;
       ThinWall thin;
