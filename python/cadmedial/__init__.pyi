@@ -70,5 +70,6 @@ def compute(
     rho: float = ...,
     progress: Optional[ProgressCallback] = ...,
     plain_medial: bool = ...,
+    adapt: bool = ...,
 ) -> MedialAxisResult: ...
 def load(path: Union[str, os.PathLike[str]]) -> MedialAxisResult: ...

@@ -98,7 +98,7 @@ def _flag(name, value):
 
 
 def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=None,
-            plain_medial=False):
+            plain_medial=False, adapt=True):
     """The inner medial axis of every solid of ``source``.
 
     source    a STEP/IGES/BREP file path, BREP text, a FreeCAD Part.Shape or a _core.Shape
@@ -113,6 +113,9 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
               convex-edge or corner completion) instead of CAD_MEDIAL, on the same samples, for
               comparison. Like the program's --plain-medial it leaves theta as given: the paper
               uses theta=22.5 for MEDIAL.
+    adapt     True (default) samples walls thinner than the spacing allows more densely, down to
+              a quarter of the spacing (a second sampling pass); False, like the program's
+              --uniform, keeps one spacing everywhere.
 
     Returns a MedialAxisResult. Raises InvalidInput (bad file, shape or parameter; also a
     ValueError), GeometryError (a stage failed; also a RuntimeError) or Cancelled.
@@ -120,8 +123,9 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
     shape = read_shape(source)
     spacing, samples = _density(spacing, samples)
     plain_medial = _flag("plain_medial", plain_medial)
+    adapt = _flag("adapt", adapt)
     mesh, stats = _core.compute_medial_axis(shape, spacing, samples, _number("theta", theta),
-                                            _number("rho", rho), progress, plain_medial)
+                                            _number("rho", rho), progress, plain_medial, adapt)
     return MedialAxisResult(mesh, json.loads(stats))
 
 

@@ -30,6 +30,8 @@ std::string usage() {
       "  --rho R          Ratio condition threshold, > 0 (default 8)\n"
       "  --stats F        also write run statistics as JSON\n"
       "  --quiet          no progress lines on stderr\n"
+      "  --uniform        one spacing everywhere: do not sample walls thinner than the spacing\n"
+      "                   allows more densely (by default they get down to a quarter of it)\n"
       "  --plain-medial   plain MEDIAL (section 3: pole umbrellas, no edge or corner completion),\n"
       "                   for comparison; use with --theta 22.5\n"
       "\n"
@@ -115,6 +117,9 @@ Args parse_args(const std::vector<std::string>& argv) {
       args.params.medial.theta_deg = theta;
     } else if (arg == "--rho") {
       args.params.medial.rho = positive(arg, take_value());
+    } else if (arg == "--uniform") {
+      no_value();
+      args.params.sampling.adapt_to_walls = false;
     } else if (arg == "--plain-medial") {
       no_value();
       args.params.medial.plain_medial = true;

@@ -264,14 +264,15 @@ def test_bad_shape_is_refused_and_adds_nothing(doc, name, fragment):
 
 
 def test_walls_thinner_than_two_spacings_are_reported_as_a_warning(doc, capfd):
-    # The box is 10 thick (medial radius 5): under two spacings of 6, not of 3.
-    box = add_box(doc)
+    # The box is 0.8 thick (medial radius 0.4): the sampling adapts to thin walls down to a
+    # quarter of the spacing, 0.5 at a spacing of 2 (too coarse: the warning says so), 0.25 at 1.
+    box = add_box(doc, length=0.8)
     capfd.readouterr()
-    coarse = medial_app.make_medial_axis(box, spacing=6.0)
+    coarse = medial_app.make_medial_axis(box, spacing=2.0)
     out, err = capfd.readouterr()
     assert coarse.Status == "ok"
     assert "thinner than two sample spacings" in out + err
-    coarse.Spacing = 3.0
+    coarse.Spacing = 1.0
     doc.recompute()
     out, err = capfd.readouterr()
     assert coarse.Status == "ok"

@@ -99,8 +99,13 @@ def test_compute_is_repeatable_up_to_order(box_step):
 
 def test_walls_thinner_than_two_spacings_are_warned_about(box_step):
     # The box is 10 thick: its medial radius is 5, under a spacing of 6 (the sheet between the
-    # 20 x 30 faces has samples only 10 / 6 spacings apart), not under 3.
-    coarse = cadmedial.compute(box_step, spacing=6.0)
+    # 20 x 30 faces has samples only 10 / 6 spacings apart), not under 3. With one spacing
+    # everywhere (adapt=False) the first is warned about; by default it is sampled finer.
+    adapted = cadmedial.compute(box_step, spacing=6.0)
+    assert adapted.stats["warnings"] == []
+    assert 10.0 - 1e-6 <= adapted.stats["solids"][0]["thinnest_wall"] <= 12.0
+    coarse = cadmedial.compute(box_step, spacing=6.0, adapt=False)
+    assert adapted.stats["samples"] > 2 * coarse.stats["samples"]
     assert len(coarse.stats["warnings"]) == 1
     assert "thinner than two sample spacings" in coarse.stats["warnings"][0]
     assert 10.0 - 1e-6 <= coarse.stats["solids"][0]["thinnest_wall"] <= 12.0

@@ -302,4 +302,11 @@ Features classify_features(const TopoDS_Solid& solid, double smooth_angle_deg) {
   return f;
 }
 
+std::vector<std::array<int, 2>> convex_face_pairs(const Features& f) {
+  std::vector<std::array<int, 2>> pairs;
+  for (size_t e = 0; e < f.edge_kind.size(); ++e)
+    if (f.edge_kind[e] == EdgeKind::Convex || f.edge_kind[e] == EdgeKind::Mixed) pairs.push_back(f.edge_faces[e]);
+  return pairs;
+}
+
 }  // namespace cadmedial

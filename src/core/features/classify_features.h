@@ -63,6 +63,9 @@ struct Features {
 /// convex at the vertex, or it is a singular point (cone apex) where the solid is locally convex.
 Features classify_features(const TopoDS_Solid& solid, double smooth_angle_deg = 1.0);
 
+/// The two faces of every convex or mixed edge.
+std::vector<std::array<int, 2>> convex_face_pairs(const Features& features);
+
 /// Geometry of edge `edge_index` (0-based) and its two faces at edge parameter t.
 EdgePoint edge_point(const Features& features, int edge_index, double t);
 

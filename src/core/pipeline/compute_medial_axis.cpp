@@ -5,6 +5,7 @@
 #include <atomic>
 #include <future>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <Bnd_Box.hxx>
@@ -18,6 +19,7 @@
 #include "../medial/medial_axis.h"
 #include "../medial/reconstruct_faces.h"
 #include "../sampling/sample_solid.h"
+#include "../sampling/spacing_field.h"
 #include "../sampling/thin_walls.h"
 #include "exact_inside_test.h"
 
@@ -120,41 +122,75 @@ void check_params(const ComputeParams& params) {
 
 namespace {
 
+// Thin walls (adaptive sampling): the local spacing per unit of the wall's half thickness (the
+// radius), at most kMaxRefinement times finer than the spacing (16 times the samples per area),
+// growing back with slope kGradation away from the wall.
+constexpr double kSpacingPerRadius = 0.5;
+constexpr double kMaxRefinement = 4.0;
+constexpr double kGradation = 0.5;
+
+struct SolidSampling {
+  Samples samples;
+  SpacingField field{1.0};  ///< uniform, or finer at thin walls
+  /// The thinnest wall, when the first pass's answer is final (nothing was refined).
+  std::optional<ThinWall> thin;
+};
+
 // With a target count, the plan's estimate ignores the extra samples that curved faces take:
 // sample, and rescale the spacing by the square root of the miss until within 15 % (3 passes).
-std::vector<Samples> sample_solids(const std::vector<TopoDS_Solid>& solids, const std::vector<Features>& features,
-                                   const SamplingParams& params, double& spacing, const Progress& progress) {
-  std::vector<Samples> samples;
+// Then where walls are thinner than the spacing allows, sample the solid again with a finer
+// local spacing there (the target count is the uniform passes').
+std::vector<SolidSampling> sample_solids(const std::vector<TopoDS_Solid>& solids,
+                                         const std::vector<Features>& features, const SamplingParams& params,
+                                         double& spacing, const Progress& progress) {
+  std::vector<SolidSampling> out;
   const int passes = params.spacing > 0 ? 1 : 3;
   const double target = params.target_samples > 0 ? static_cast<double>(params.target_samples)
                                                    : static_cast<double>(SamplingParams::default_target_samples);
   for (int pass = 0; pass < passes; ++pass) {
-    samples.clear();
+    out.clear();
     double total = 0;
     for (size_t i = 0; i < solids.size(); ++i) {
-      samples.push_back(sample_solid(solids[i], features[i], spacing, progress));
-      total += static_cast<double>(samples.back().size());
+      out.push_back({sample_solid(solids[i], features[i], spacing, progress), SpacingField(spacing), {}});
+      total += static_cast<double>(out.back().samples.size());
     }
     const double miss = total / target;
     if (passes == 1 || std::abs(miss - 1.0) < 0.15 || pass + 1 == passes) break;
     spacing *= std::sqrt(miss);
   }
-  return samples;
+  if (!params.adapt_to_walls) return out;  // the worker finds the thinnest wall for the warning
+  for (size_t i = 0; i < solids.size(); ++i) {
+    SolidSampling& s = out[i];
+    const std::vector<double> radii = wall_radii(s.samples, spacing, convex_face_pairs(features[i]), progress);
+    s.field = thin_wall_spacing(s.samples, radii, spacing, kSpacingPerRadius, kMaxRefinement, kGradation);
+    if (s.field.is_uniform()) {
+      s.thin = ThinWall{};  // no wall thinner than the spacing
+      continue;
+    }
+    s.field.measure_on(s.samples, features[i].edge_faces);
+    s.samples = sample_solid(solids[i], features[i], s.field, progress);
+  }
+  return out;
 }
 
-// Facing walls closer than two spacings: the Voronoi sheet between them is only as good as the
-// samples across the wall (hardening.md: a rib narrower than h leaves holes in its sheet), and
-// nothing else in the result would say so.
-void warn_of_thin_walls(const ThinWall& w, double spacing, int solid, int solids, SolidStats& ss,
+// Facing walls closer than two (local) spacings: the Voronoi sheet between them is only as good as
+// the samples across the wall (hardening.md: a rib narrower than h leaves holes in its sheet), and
+// nothing else in the result would say so. After the refinement, those are the walls thinner than
+// the finest it may go, or that the first pass missed.
+void warn_of_thin_walls(const ThinWall& w, const SpacingField& field, int solid, int solids, SolidStats& ss,
                         std::vector<std::string>& warnings) {
   ss.thinnest_wall = 2.0 * w.radius;
-  if (!(w.radius < spacing)) return;
+  const double local = field.at(w.at);
+  if (!(w.radius < local)) return;
+  const bool adapted = !field.is_uniform();
   std::ostringstream msg;
   msg.precision(3);
   if (solids > 1) msg << "solid " << solid + 1 << ": ";
   msg << "walls down to " << 2.0 * w.radius << " thick (near (" << w.at[0] << ", " << w.at[1] << ", " << w.at[2]
-      << ")) are thinner than two sample spacings (" << 2.0 * spacing << "); the axis between them may have holes "
-      << "or extra loops: a spacing of " << w.radius << " or less resolves them";
+      << ")) are thinner than two sample spacings (" << 2.0 * local
+      << (adapted ? ", the finest the sampling adapts to" : "")
+      << "); the axis between them may have holes or extra loops: a spacing of "
+      << w.radius * (adapted ? kSpacingPerRadius * kMaxRefinement : 1.0) << " or less resolves them";
   warnings.push_back(msg.str());
 }
 
@@ -171,7 +207,7 @@ SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& para
     for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
     SamplingPlan sp = plan(measure(solids, features), params);
     std::size_t count = 0;
-    for (const Samples& s : sample_solids(solids, features, params, sp.spacing, {})) count += s.size();
+    for (const SolidSampling& s : sample_solids(solids, features, params, sp.spacing, {})) count += s.samples.size();
     sp.estimated_samples = count;
     return sp;
   } catch (const Standard_Failure& err) {
@@ -205,7 +241,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
 
     t0 = Clock::now();
     double spacing = sp.spacing;
-    const std::vector<Samples> samples = sample_solids(solids, features, params.sampling, spacing, progress);
+    const std::vector<SolidSampling> sampled = sample_solids(solids, features, params.sampling, spacing, progress);
     stats.spacing = spacing;
     add_timing(stats.timings, "sampling", seconds_since(t0));
 
@@ -223,7 +259,8 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         ss.smooth_edges += k == EdgeKind::Smooth;
       }
       for (bool c : features[i].nonconcave_corner) ss.nonconcave_corners += c;
-      ss.samples = samples[i].size();
+      const Samples& samples = sampled[i].samples;
+      ss.samples = samples.size();
 
       // The face-by-face reconstruction, then the thin-wall check, run on a second thread while
       // CGAL triangulates (they need only the samples; the selection waits for them); their time
@@ -236,11 +273,12 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       std::atomic<bool> abandoned{false};
       const Progress worker = [&abandoned](const std::string&, double) { return !abandoned.load(); };
       std::shared_future<Umbrellas> umbrellas =
-          std::async(std::launch::async, [&s = samples[i], &reconstruction_seconds, &thin, &worker, spacing] {
+          std::async(std::launch::async, [&s = sampled[i], &reconstruction_seconds, &thin, &worker, spacing,
+                                          wedges = convex_face_pairs(features[i])] {
             const auto start = Clock::now();
-            Umbrellas u = reconstruct_faces(s, worker);
+            Umbrellas u = reconstruct_faces(s.samples, worker);
             reconstruction_seconds = seconds_since(start);
-            thin = thinnest_wall(s, spacing, worker);
+            thin = s.thin ? *s.thin : thinnest_wall(s.samples, spacing, wedges, worker);
             return u;
           }).share();
       const struct Abandon {
@@ -251,8 +289,8 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt.
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9));
       MedialAxisStats ms;
-      const MedialMesh mesh = medial_axis(samples[i], umbrellas, params.medial, inside, i, &ms, sub);
-      warn_of_thin_walls(thin, spacing, i, n, ss, stats.warnings);
+      const MedialMesh mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, sub);
+      warn_of_thin_walls(thin, sampled[i].field, i, n, ss, stats.warnings);
       add_timing(stats.timings, "reconstruction", reconstruction_seconds);
       for (const auto& [stage, s] : ms.timings) add_timing(stats.timings, stage, s);
       ss.vertices = mesh.num_vertices();

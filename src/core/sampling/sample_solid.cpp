@@ -52,6 +52,9 @@ namespace {
 Point3 to_point(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
 Point3 to_point(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
 
+// Unit normals more than 120 degrees apart (zero normals, on corners, are never opposite).
+bool opposite(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < -0.5; }
+
 struct ChainPoint {
   int sample;
   double t;
@@ -60,9 +63,10 @@ struct ChainPoint {
 
 class Sampler {
  public:
-  Sampler(const TopoDS_Solid& solid, const Features& f, double spacing, const Progress& progress)
-      : solid_(solid), f_(f), sp_(sample_spacing(spacing)), progress_(progress), grid_(spacing) {
-    out_.spacing = spacing;
+  Sampler(const TopoDS_Solid& solid, const Features& f, const SpacingField& field, const Progress& progress)
+      : solid_(solid), f_(f), sp_(sample_spacing(field.uniform())), field_(field), progress_(progress),
+        grid_(field.uniform()) {
+    out_.spacing = field.uniform();
   }
 
   Samples run() {
@@ -119,7 +123,7 @@ class Sampler {
     }
     for (int v = 0; v < nv; ++v) {
       const gp_Pnt p = BRep_Tool::Pnt(TopoDS::Vertex(f_.vertices(v + 1)));
-      if (f_.sharp_vertex[v]) ball_radius_[v] = std::min(sp_.edge, 0.3 * shortest[v]);
+      if (f_.sharp_vertex[v]) ball_radius_[v] = std::min(sample_spacing(field_.at(to_point(p))).edge, 0.3 * shortest[v]);
       const int id = add(to_point(p), SampleTag::Corner, ball_radius_[v]);
       out_.vertex[id] = v;
       out_.nonconcave[id] = f_.nonconcave_corner[v] ? 1 : 0;
@@ -196,8 +200,9 @@ class Sampler {
       try {
         BRepAdaptor_Curve curve(edge);
         const bool sharp = is_sharp(e);
-        const double h = curve_spacing(curve, sharp ? sp_.edge : sp_.face);
-        const double excl = f_.edge_kind[e] == EdgeKind::Convex || f_.edge_kind[e] == EdgeKind::Mixed ? 1.05 * sp_.triplet : 0.0;
+        const SampleSpacing local = sample_spacing(field_.on_edge(e));
+        const double h = curve_spacing(curve, sharp ? local.edge : local.face);
+        const double excl = f_.edge_kind[e] == EdgeKind::Convex || f_.edge_kind[e] == EdgeKind::Mixed ? 1.05 * local.triplet : 0.0;
         const double len = GCPnts_AbscissaPoint::Length(curve, t0, t1);
         // 4.2.1 ball rule: the ball around a sharp corner meets the edge in one sample, and no
         // other sample lies inside the ball.
@@ -302,7 +307,7 @@ class Sampler {
         if (chain[i].point < 0) continue;
         const EdgePoint& ep = edge_points_[chain[i].point];
         if (ep.kind != PointKind::Convex) continue;
-        const double d = sp_.triplet;
+        const double d = sample_spacing(field_.on_edge(e)).triplet;
         int side[2] = {-1, -1};
         gp_Pnt2d uv[2];
         gp_Pnt q[2];
@@ -375,6 +380,7 @@ class Sampler {
   // half the smallest local spacing in space (metric and curvature probed on a 13 x 13 grid).
   struct FacePlan {
     bool planar = false;
+    double spacing = 0;  ///< the local spacing the lattice is fine enough for
     double u_scale = 1, v_scale = 1;
     UvLattice lattice;
   };
@@ -423,6 +429,7 @@ class Sampler {
       nvv = std::max(1L, static_cast<long>(nvv * shrink));
     }
     plan.planar = planar;
+    plan.spacing = r_min;
     plan.lattice = {u0, v0, (u1 - u0) / nu, (v1 - v0) / nvv, nu, nvv};
     return plans_.emplace(fi, plan).first->second;
   }
@@ -442,12 +449,48 @@ class Sampler {
     return classifier(fi).Perform(uv) == TopAbs_IN;
   }
 
-  void sample_face(int fi, std::mt19937_64& rng, std::uniform_real_distribution<double>& jitter) {
+  // A candidate on face fi: kept unless a sample placed before lies within the local spacing
+  // (the field's `h`, smaller where the surface curves) or the face's classifier says outside.
+  void try_face_candidate(int fi, double u, double v, LatticeClassifier::Answer where, double h,
+                          BRepLProp_SLProps& props) {
     const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
     const BRepAdaptor_Surface& surf = surface(fi);
-    const BRepTopAdaptor_FClass2d& cls = classifier(fi);
+    gp_Pnt p;
+    gp_Vec su, sv;
+    surf.D1(u, v, p, su, sv);
+    gp_Vec n = su.Crossed(sv);
+    if (n.Magnitude() < 1e-300) return;  // singular point: the vertex sample covers it
+    double r = h, k = 0;
+    if (!face_plan(fi).planar) {
+      props.SetParameters(u, v);
+      if (props.IsCurvatureDefined()) {
+        k = std::max(std::abs(props.MaxCurvature()), std::abs(props.MinCurvature()));
+        if (k > 0) r = std::clamp(sp_.max_turn_rad / k, std::min(sp_.min_face, h), h);
+      }
+    }
+    const Point3 c = to_point(p);
+    n.Normalize();
+    if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
+    const Point3 nc = to_point(n);
+    // The cheap test first: most candidates fall within reach of a sample already placed. A
+    // sample on a wall facing this one (a thin plate's other side) is no neighbour: each wall
+    // needs its own samples for the sheet between them.
+    const bool crowded = grid_.any_near(c, std::max(r, sp_.edge), [&](int id) {
+      const double ex = std::max(r, exclusion_[id]);
+      return distance2(out_.points[id], c) < ex * ex && !opposite(out_.normal[id], nc);
+    });
+    if (crowded) return;
+    if (where == LatticeClassifier::Answer::Ask && classifier(fi).Perform(gp_Pnt2d(u, v)) != TopAbs_IN) return;
+    const int id = add(c, SampleTag::Face);
+    out_.face[id] = fi;
+    out_.normal[id] = to_point(n);
+    out_.curvature[id] = static_cast<float>(k);
+    face_points_[fi].push_back({id, {u, v}});
+  }
+
+  void sample_face(int fi, std::mt19937_64& rng, std::uniform_real_distribution<double>& jitter) {
+    const BRepAdaptor_Surface& surf = surface(fi);
     const FacePlan& plan = face_plan(fi);
-    const bool planar = plan.planar;
     FaceDomain& dom = out_.faces[fi];
     dom.u_scale = plan.u_scale;
     dom.v_scale = plan.v_scale;
@@ -456,6 +499,8 @@ class Sampler {
     LatticeClassifier& inside = lattice(fi);
     BRepLProp_SLProps props(surf, 2, 1e-9);
     const int nf = f_.faces.Extent();
+    // Where walls are thin, a lattice cell coarser than the local spacing is cut into m x m.
+    const bool refine = field_.on_face(fi) < sp_.face;
     for (long i = 0; i < nu; ++i) {
       // Per row: one face can take seconds (bench/cancel_latency.py), and a cancel must not wait.
       report(progress_, "sampling", 0.2 + 0.8 * (fi + static_cast<double>(i) / nu) / std::max(1, nf));
@@ -463,34 +508,23 @@ class Sampler {
         const double u = u0 + du * (i + 0.5 + jitter(rng)), v = v0 + dv * (j + 0.5 + jitter(rng));
         const LatticeClassifier::Answer where = inside.classify(i, j, gp_Pnt2d(u, v));
         if (where == LatticeClassifier::Answer::Out) continue;
-        gp_Pnt p;
-        gp_Vec su, sv;
-        surf.D1(u, v, p, su, sv);
-        gp_Vec n = su.Crossed(sv);
-        if (n.Magnitude() < 1e-300) continue;  // singular point: the vertex sample covers it
-        double r = sp_.face, k = 0;
-        if (!planar) {
-          props.SetParameters(u, v);
-          if (props.IsCurvatureDefined()) {
-            k = std::max(std::abs(props.MaxCurvature()), std::abs(props.MinCurvature()));
-            if (k > 0) r = std::clamp(sp_.max_turn_rad / k, sp_.min_face, sp_.face);
-          }
+        if (!refine) {
+          try_face_candidate(fi, u, v, where, sp_.face, props);
+          continue;
         }
-        const Point3 c = to_point(p);
-        // The cheap test first: most candidates fall within reach of a sample already placed.
-        const bool crowded = grid_.any_near(c, std::max(r, sp_.edge), [&](int id) {
-          const double ex = std::max(r, exclusion_[id]);
-          return distance2(out_.points[id], c) < ex * ex;
-        });
-        if (crowded) continue;
-        if (where == LatticeClassifier::Answer::Ask && cls.Perform(gp_Pnt2d(u, v)) != TopAbs_IN) continue;
-        n.Normalize();
-        if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
-        const int id = add(c, SampleTag::Face);
-        out_.face[id] = fi;
-        out_.normal[id] = to_point(n);
-        out_.curvature[id] = static_cast<float>(k);
-        face_points_[fi].push_back({id, {u, v}});
+        const double h = field_.at(to_point(surf.Value(u, v)));
+        const int m = std::min(8, static_cast<int>(std::ceil(plan.spacing / h - 1e-9)));
+        if (m <= 1) {
+          try_face_candidate(fi, u, v, where, h, props);
+          continue;
+        }
+        for (int a = 0; a < m; ++a)
+          for (int b = 0; b < m; ++b) {
+            const double us = u0 + du * (i + (a + 0.5 + jitter(rng)) / m);
+            const double vs = v0 + dv * (j + (b + 0.5 + jitter(rng)) / m);
+            const LatticeClassifier::Answer there = inside.classify(i, j, gp_Pnt2d(us, vs));
+            if (there != LatticeClassifier::Answer::Out) try_face_candidate(fi, us, vs, there, h, props);
+          }
       }
     }
     lattices_.erase(fi);
@@ -552,6 +586,7 @@ class Sampler {
   const TopoDS_Solid& solid_;
   const Features& f_;
   SampleSpacing sp_;
+  const SpacingField& field_;
   Progress progress_;
   Samples out_;
   PointGrid grid_;
@@ -572,8 +607,13 @@ class Sampler {
 
 Samples sample_solid(const TopoDS_Solid& solid, const Features& features, double spacing, const Progress& progress) {
   if (!(spacing > 0) || !std::isfinite(spacing)) throw InvalidInput("spacing must be a positive number");
+  return sample_solid(solid, features, SpacingField(spacing), progress);
+}
+
+Samples sample_solid(const TopoDS_Solid& solid, const Features& features, const SpacingField& field,
+                     const Progress& progress) {
   try {
-    return Sampler(solid, features, spacing, progress).run();
+    return Sampler(solid, features, field, progress).run();
   } catch (const Standard_Failure& err) {
     throw GeometryError(std::string("sampling failed: ") + err.GetMessageString());
   }

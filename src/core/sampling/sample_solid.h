@@ -12,6 +12,7 @@
 #include "../progress.h"
 #include "../types.h"
 #include "samples.h"
+#include "spacing_field.h"
 
 namespace cadmedial {
 
@@ -28,6 +29,10 @@ SampleSpacing sample_spacing(double spacing);
 
 /// Samples one solid. Deterministic for a given input.
 Samples sample_solid(const TopoDS_Solid& solid, const Features& features, double spacing,
+                     const Progress& progress = {});
+/// The same with a spacing that varies (thin walls): an edge takes its smallest, face lattice
+/// cells are cut finer where the field is smaller than the face's spacing.
+Samples sample_solid(const TopoDS_Solid& solid, const Features& features, const SpacingField& field,
                      const Progress& progress = {});
 
 /// Surface area of the solid's faces and the total length of its edges (for planning).

@@ -1,6 +1,7 @@
 #include "thin_walls.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 
 #include "point_grid.h"
@@ -11,43 +12,74 @@ namespace {
 
 double dot3(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
+std::int64_t pair_key(int a, int b) { return (static_cast<std::int64_t>(a) << 32) | static_cast<std::uint32_t>(b); }
+
 bool on_face(const Samples& s, std::size_t i) { return s.tag[i] == SampleTag::Face || s.tag[i] == SampleTag::Triplet; }
+
+bool on_edge(const Samples& s, std::size_t i) { return s.tag[i] == SampleTag::Edge || s.tag[i] == SampleTag::Ball; }
+
+// Face samples, and edge samples where the solid is not convex.
+bool on_wall(const Samples& s, std::size_t i) { return on_face(s, i) || (on_edge(s, i) && s.edge_convex[i] != 1); }
 
 }  // namespace
 
-ThinWall thinnest_wall(const Samples& s, double spacing, const Progress& progress) {
+std::vector<double> wall_radii(const Samples& s, double spacing, const std::vector<std::array<int, 2>>& wedges,
+                               const Progress& progress) {
   // The ball tangent at p (outward normal n) through q has radius |q - p|^2 / (2 (p - q).n): the
   // shrinking-ball estimate of the medial radius at p. Only a facing wall counts: across a convex
   // or concave edge the ball shrinks too, but there the axis meets the edge by construction. A
-  // ball smaller than the spacing through q lies within two spacings of p.
-  // Near a convex edge of less than 60 degrees the two faces face each other too, and the wedge
-  // thins to nothing at the edge, where the completion (4.2.2) joins the axis to the edge: face
-  // samples within a spacing of a convex-edge sample are not asked.
-  ThinWall w;
+  // ball smaller than the spacing through q lies within two spacings of p. Walls are face
+  // samples and samples of concave and smooth edges (a slot's floor edges face its walls; a
+  // concave edge sample has both faces' normals).
+  std::vector<double> radii(s.size(), std::numeric_limits<double>::infinity());
   const double reach = 2.0 * spacing;
   PointGrid grid(reach), convex(spacing);
   for (std::size_t i = 0; i < s.size(); ++i) {
-    if (on_face(s, i)) grid.insert(s.points[i], static_cast<int>(i));
+    if (on_wall(s, i)) grid.insert(s.points[i], static_cast<int>(i));
     if (s.edge_convex[i] == 1) convex.insert(s.points[i], static_cast<int>(i));
   }
+  std::vector<std::int64_t> wedge;  // both orders, sorted
+  for (const auto& [a, b] : wedges) wedge.push_back(pair_key(a, b)), wedge.push_back(pair_key(b, a));
+  std::sort(wedge.begin(), wedge.end());
   const double spacing2 = spacing * spacing, reach2 = reach * reach;
+  auto facing = [&](const Point3& n, int j) {
+    return dot3(n, s.normal[j]) <= -0.5 || (on_edge(s, j) && dot3(n, s.normal2[j]) <= -0.5);
+  };
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (i % 4096 == 0) report(progress, "thin walls", static_cast<double>(i) / s.size());
-    if (!on_face(s, i)) continue;
-    const Point3 &p = s.points[i], &n = s.normal[i];
-    if (convex.any_near(p, spacing, [&](int j) { return distance2(s.points[j], p) < spacing2; })) continue;
+    if (!on_wall(s, i)) continue;
+    const Point3& p = s.points[i];
+    const bool by_edge = convex.any_near(p, spacing, [&](int j) { return distance2(s.points[j], p) < spacing2; });
     double radius = std::numeric_limits<double>::infinity();
-    grid.any_near(p, reach, [&](int j) {
-      if (dot3(n, s.normal[j]) > -0.5) return false;
-      const Point3 d{s.points[j][0] - p[0], s.points[j][1] - p[1], s.points[j][2] - p[2]};
-      const double d2 = dot3(d, d);
-      const double depth = -dot3(d, n);  // how far q lies inside p's tangent plane
-      if (depth > 0 && d2 < reach2) radius = std::min(radius, d2 / (2.0 * depth));
-      return false;
-    });
-    if (!(radius < spacing)) continue;
+    for (const Point3* n : {&s.normal[i], on_edge(s, i) ? &s.normal2[i] : nullptr}) {
+      if (!n) continue;
+      grid.any_near(p, reach, [&](int j) {
+        if (!facing(*n, j)) return false;
+        if (by_edge && s.face[i] >= 0 && s.face[j] >= 0 && s.face[j] != s.face[i] &&
+            std::binary_search(wedge.begin(), wedge.end(), pair_key(s.face[i], s.face[j])))
+          return false;
+        const Point3 d{s.points[j][0] - p[0], s.points[j][1] - p[1], s.points[j][2] - p[2]};
+        const double d2 = dot3(d, d);
+        const double depth = -dot3(d, *n);  // how far q lies inside p's tangent plane
+        if (!(depth > 0 && d2 < reach2)) return false;
+        radius = std::min(radius, d2 / (2.0 * depth));
+        // Parallel walls: half their distance, wherever q sits along the other wall (the ball
+        // through q overestimates by (lateral offset)^2 / (2 depth) when q is not opposite p).
+        if (dot3(*n, s.normal[j]) < -0.95) radius = std::min(radius, 0.5 * depth);
+        return false;
+      });
+    }
+    if (radius < spacing) radii[i] = radius;
+  }
+  return radii;
+}
+
+ThinWall thinnest_wall(const Samples& s, const std::vector<double>& radii) {
+  ThinWall w;
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    if (!(radii[i] < std::numeric_limits<double>::infinity())) continue;
     ++w.samples;
-    if (radius < w.radius) w.radius = radius, w.at = p;
+    if (radii[i] < w.radius) w.radius = radii[i], w.at = s.points[i];
   }
   return w;
 }

@@ -1,10 +1,13 @@
 // The thinnest wall a sampling shows: where two walls face each other closer than the spacing can
 // carry the medial sheet between them (section 3's density condition fails there), the axis may
-// get holes or extra loops. A cheap check on the samples that lets the user know.
+// get holes or extra loops. Found on a first sampling, it tells the sampler where to sample more
+// densely (spacing_field.h), and the user where that was not enough.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <limits>
+#include <vector>
 
 #include "../progress.h"
 #include "../types.h"
@@ -12,18 +15,27 @@
 
 namespace cadmedial {
 
+/// Per sample: the radius of the smallest inner ball tangent at it through a sample of a facing
+/// wall (outward normals more than 120 degrees apart), half the wall's thickness there (an upper
+/// bound: the samples need not sit opposite). Only balls smaller than `spacing` are looked for;
+/// infinity elsewhere: on edge and corner samples, and where no wall faces within two spacings.
+/// Within a spacing of a convex-edge sample, the two faces of a convex edge (`wedges`, face index
+/// pairs) do not count as walls for each other: a sharp wedge thins to nothing at its edge, where
+/// the completion (4.2.2) joins the axis to the edge. (The faces of a thin plate's rim edges are
+/// not such a pair: top and bottom face each other up to the rim.) Progress is reported (and so can cancel) every few thousand samples.
+std::vector<double> wall_radii(const Samples& samples, double spacing, const std::vector<std::array<int, 2>>& wedges,
+                               const Progress& progress = {});
+
 struct ThinWall {
-  /// Radius of the smallest inner ball tangent at a face sample through a sample of a facing
-  /// wall: half the wall's thickness there (an upper bound: the samples need not sit opposite).
-  /// Only balls smaller than the spacing are looked for: infinity when there is none.
-  double radius = std::numeric_limits<double>::infinity();
+  double radius = std::numeric_limits<double>::infinity();  ///< the smallest of wall_radii
   Point3 at{0, 0, 0};         ///< the face sample where it was found
-  std::size_t samples = 0;    ///< face samples with such a ball
+  std::size_t samples = 0;    ///< face samples with a finite radius
 };
 
-/// Looks for facing walls (outward normals more than 120 degrees apart) within two spacings of
-/// each face sample farther than a spacing from every convex-edge sample.
-/// Progress is reported (and so can cancel) every few thousand samples.
-ThinWall thinnest_wall(const Samples& samples, double spacing, const Progress& progress = {});
+ThinWall thinnest_wall(const Samples& samples, const std::vector<double>& radii);
+inline ThinWall thinnest_wall(const Samples& samples, double spacing, const std::vector<std::array<int, 2>>& wedges,
+                              const Progress& progress = {}) {
+  return thinnest_wall(samples, wall_radii(samples, spacing, wedges, progress));
+}
 
 }  // namespace cadmedial

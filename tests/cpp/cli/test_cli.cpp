@@ -243,17 +243,22 @@ TEST(Cli, SummaryCountsTheEdgesOfTheOutputWhenThereAreAny) {
   }
 }
 
-// A plate 1 thick at spacing 1: the result is written, and one warning line says the walls are
-// too thin for the spacing (also under --quiet, which silences only progress).
+// A plate 1 thick at spacing 1 with --uniform (no refinement of thin walls): the result is
+// written, and one warning line says the walls are too thin for the spacing (also under --quiet,
+// which silences only progress). Without --uniform the plate is sampled finer and nothing is said.
 TEST(Cli, WarnsOfWallsThinnerThanTwoSpacings) {
   TempDir dir;
   const std::string plate = dir.file("plate.brep");
   BRepTools::Write(BRepPrimAPI_MakeBox(30, 30, 1).Shape(), plate.c_str());
-  const CliRun r = run(dir, {"compute", plate, "-o", dir.file("plate.ply"), "--spacing", "1", "--quiet"});
+  const CliRun r =
+      run(dir, {"compute", plate, "-o", dir.file("plate.ply"), "--spacing", "1", "--quiet", "--uniform"});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.rfind("cadmedial: warning: walls down to 1", 0), 0u) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.out.find("wrote "), std::string::npos) << r.out;
+  const CliRun adapted = run(dir, {"compute", plate, "-o", dir.file("plate2.ply"), "--spacing", "1", "--quiet"});
+  ASSERT_EQ(adapted.status, 0) << adapted.err;
+  EXPECT_EQ(adapted.err, "");
 }
 
 TEST(Cli, ProgressIsALinePerStageChangeNotAFlood) {

@@ -11,22 +11,15 @@ namespace cadmedial::test {
 
 inline bool known_weakness(const std::string& test, const std::string& name) {
   static const std::set<std::pair<std::string, std::string>> cases{
-      // Where the exact axis is a curve (the cylinder's axis, the torus's circle, a fillet's
-      // centre line), the Voronoi facets that approximate it form a thin cloud of fins whose
-      // small loops change V - E + F (the paper, section 5: such parts are "approximated by thin
-      // Voronoi facets"). Needs a topology-preserving clean-up of the fins.
-      {"Euler", "FreecadYRodMount"},
-      {"Euler", "NistFtc11"},
-      // One vertex of ~20,000 is 0.35 from the axis against 0.33: a fin of the same cloud.
+      // One vertex of ~20,000 is 0.35 from the axis against 0.33: a fin of the Voronoi facets that
+      // approximate the axis where it is a curve (the paper, section 5: "thin Voronoi facets").
       {"NearAxis", "Cylinder"},
       // Hard inputs (test_hard_inputs.cpp; figures measured on the hard-inputs branch).
-      // V - E + F = -15 at the default density (h = 0.55 > the rib's 0.5 width: 14 small holes in
-      // the rib's sheet); 0 from h = 0.25 down. (The sheet under the rib, missing before, is
-      // selected by the concave-edge wedge test in select_facets.cpp.)
-      {"Euler", "TinyRib"},
       // Where a 3-degree wedge is thinner than about h (0.83 to 1.04 h) the axis stops: its edge is 3.97
       // from the output at h = 0.25 (missing length ~ h / tan(angle): 0.72 at 20 degrees, 1.28 at
-      // 10, 2.4 at 5); the 4.2.2 completion does not bridge it. V - E + F = 0.
+      // 10, 2.4 at 5); the 4.2.2 completion does not bridge it. V - E + F = -25 with adaptive
+      // sampling (the wedge is refined to h / 4 where it is thin; it stays thinner than that near
+      // its edge).
       {"ConvexEdges", "SharpWedge3deg"},
       {"Corners", "SharpWedge3deg"},
       {"Euler", "SharpWedge3deg"},

@@ -16,7 +16,8 @@ namespace cadmedial {
 namespace {
 
 ThinWall thin_wall_of(const TopoDS_Solid& solid, double spacing) {
-  return thinnest_wall(sample_solid(solid, classify_features(solid), spacing), spacing);
+  const Features f = classify_features(solid);
+  return thinnest_wall(sample_solid(solid, f, spacing), spacing, convex_face_pairs(f));
 }
 
 TEST(ThinWalls, APlateThinnerThanTwoSpacingsShowsItsHalfThickness) {
@@ -45,9 +46,10 @@ TEST(ThinWalls, AWedgeIsNotAWallNearItsConvexEdge) {
   EXPECT_LT(w.radius, 0.5);
 }
 
-TEST(ThinWalls, ThePipelineWarnsAndReportsTheThickness) {
+TEST(ThinWalls, WithOneSpacingThePipelineWarnsAndReportsTheThickness) {
   ComputeParams params;
   params.sampling.spacing = 1.0;
+  params.sampling.adapt_to_walls = false;
   const ComputeResult thin = compute_medial_axis(test::make_box(30, 30, 1), params);
   ASSERT_EQ(thin.stats.warnings.size(), 1u);
   EXPECT_NE(thin.stats.warnings[0].find("thinner than two sample spacings"), std::string::npos) << thin.stats.warnings[0];
@@ -57,6 +59,39 @@ TEST(ThinWalls, ThePipelineWarnsAndReportsTheThickness) {
   const ComputeResult thick = compute_medial_axis(test::make_box(20, 20, 20), params);
   EXPECT_TRUE(thick.stats.warnings.empty());
   EXPECT_TRUE(std::isinf(thick.stats.solids[0].thinnest_wall));
+}
+
+// Adaptive sampling (the default): the 1-thick plate at spacing 1 is sampled again at a quarter to
+// a half of the spacing (0.5 per unit of its medial radius 0.5, at least 1/4), which resolves it:
+// no warning, and the medial axis has the plate's topology. A plate 0.4 thick needs a spacing of
+// 0.1, finer than 1/4: the warning stays and says so. A thick block is sampled once, unchanged.
+TEST(ThinWalls, AdaptiveSamplingResolvesThinWallsDownToAQuarterOfTheSpacing) {
+  ComputeParams uniform;
+  uniform.sampling.spacing = 1.0;
+  uniform.sampling.adapt_to_walls = false;
+  ComputeParams adaptive = uniform;
+  adaptive.sampling.adapt_to_walls = true;
+
+  const TopoDS_Solid plate = test::make_box(30, 30, 1);
+  const ComputeResult once = compute_medial_axis(plate, uniform);
+  const ComputeResult adapted = compute_medial_axis(plate, adaptive);
+  EXPECT_TRUE(adapted.stats.warnings.empty()) << adapted.stats.warnings[0];
+  // Both big faces at a spacing of 0.25 instead of 1: about 16 times their samples.
+  EXPECT_GT(adapted.stats.samples, 8 * once.stats.samples);
+  EXPECT_EQ(adapted.stats.solids[0].euler_characteristic, 1);
+  EXPECT_EQ(adapted.stats.solids[0].components, 1u);
+
+  const ComputeResult thinner = compute_medial_axis(test::make_box(12, 12, 0.4), adaptive);
+  ASSERT_EQ(thinner.stats.warnings.size(), 1u);
+  EXPECT_NE(thinner.stats.warnings[0].find("the finest the sampling adapts to"), std::string::npos)
+      << thinner.stats.warnings[0];
+  EXPECT_LE(thinner.stats.solids[0].thinnest_wall, 0.48);
+
+  const TopoDS_Solid block = test::make_box(20, 20, 20);
+  const ComputeResult block_once = compute_medial_axis(block, uniform);
+  const ComputeResult block_adapted = compute_medial_axis(block, adaptive);
+  EXPECT_EQ(block_adapted.stats.samples, block_once.stats.samples);
+  EXPECT_EQ(block_adapted.mesh.vertices, block_once.mesh.vertices);
 }
 
 }  // namespace

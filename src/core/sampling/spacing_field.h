@@ -1,0 +1,49 @@
+// The sample spacing as a field: uniform, or smaller where a first sampling found walls too thin
+// for it (thin_walls.h), growing back gradually away from them.
+#pragma once
+
+#include <vector>
+
+#include "../types.h"
+#include "point_grid.h"
+#include "samples.h"
+
+namespace cadmedial {
+
+class SpacingField {
+ public:
+  /// The same spacing everywhere.
+  explicit SpacingField(double spacing) : spacing_(spacing), grid_(spacing) {}
+
+  /// min(spacing, min over k of local[k] + gradation max(0, |x - points[k]| - spacing)): each
+  /// point's spacing holds within a (uniform) spacing of it, where the first pass had no other
+  /// sample to say, and then grows with a bounded slope, so the density changes gradually.
+  /// Points whose spacing the others already give (within 10 %) are dropped.
+  SpacingField(double spacing, const std::vector<Point3>& points, const std::vector<double>& local, double gradation);
+
+  double uniform() const { return spacing_; }
+  bool is_uniform() const { return points_.empty(); }
+  double smallest() const { return smallest_; }
+  double at(const Point3& x) const;
+
+  /// The smallest spacing at the samples of each face and each edge of a sampling of the solid
+  /// (Samples::face, Samples::edge; a face also takes its edges' samples' through `edge_faces`):
+  /// the sampler refines only those faces, and spaces an edge by its smallest.
+  void measure_on(const Samples& samples, const std::vector<std::array<int, 2>>& edge_faces);
+  double on_face(int f) const { return f >= 0 && f < static_cast<int>(face_.size()) ? face_[f] : spacing_; }
+  double on_edge(int e) const { return e >= 0 && e < static_cast<int>(edge_.size()) ? edge_[e] : spacing_; }
+
+ private:
+  double spacing_, gradation_ = 1.0, smallest_ = spacing_;
+  std::vector<Point3> points_;
+  std::vector<double> local_, face_, edge_;
+  PointGrid grid_;  // cells as large as the farthest a point's spacing spreads
+};
+
+/// Where the first sampling shows walls thinner than its spacing allows (radii from
+/// wall_radii): a local spacing of `per_radius` times the wall's half thickness, at least
+/// spacing / max_refine, spread with slope `gradation`. Uniform when no wall is thin.
+SpacingField thin_wall_spacing(const Samples& first, const std::vector<double>& radii, double spacing,
+                               double per_radius, double max_refine, double gradation);
+
+}  // namespace cadmedial
