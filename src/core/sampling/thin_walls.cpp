@@ -63,9 +63,11 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
         const double depth = -dot3(d, *n);  // how far q lies inside p's tangent plane
         if (!(depth > 0 && d2 < reach2)) return false;
         radius = std::min(radius, d2 / (2.0 * depth));
-        // Parallel walls: half their distance, wherever q sits along the other wall (the ball
-        // through q overestimates by (lateral offset)^2 / (2 depth) when q is not opposite p).
-        if (dot3(*n, s.normal[j]) < -0.95) radius = std::min(radius, 0.5 * depth);
+        // Parallel walls: half their distance, with q up to 5 depths along the other wall (the
+        // ball through q overestimates by (lateral offset)^2 / (2 depth) when q is not opposite
+        // p; farther along, q may be on a wall that only meets p's plane, as where a solid's
+        // faces touch at a corner).
+        if (dot3(*n, s.normal[j]) < -0.95 && depth * depth >= 0.04 * (d2 - depth * depth)) radius = std::min(radius, 0.5 * depth);
         return false;
       });
     }
