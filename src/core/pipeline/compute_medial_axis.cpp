@@ -128,6 +128,7 @@ namespace {
 constexpr double kSpacingPerRadius = 0.5;
 constexpr double kMaxRefinement = 4.0;
 constexpr double kGradation = 0.5;
+constexpr double kSharpWedgeDot = -0.95;  // normals of a wedge of 18 degrees
 
 struct SolidSampling {
   Samples samples;
@@ -161,7 +162,10 @@ std::vector<SolidSampling> sample_solids(const std::vector<TopoDS_Solid>& solids
   if (!params.adapt_to_walls) return out;  // the worker finds the thinnest wall for the warning
   for (size_t i = 0; i < solids.size(); ++i) {
     SolidSampling& s = out[i];
-    const std::vector<double> radii = wall_radii(s.samples, spacing, convex_face_pairs(features[i]), progress);
+    // Wedges of more than about 18 degrees are sampled finer near their edge too (tail_turbine's
+    // 43-degree edges had holes in the sheet there); sharper ones would only hit the floor.
+    const std::vector<double> radii =
+        wall_radii(s.samples, spacing, convex_face_pairs(features[i]), kSharpWedgeDot, progress);
     s.field = thin_wall_spacing(s.samples, radii, spacing, kSpacingPerRadius, kMaxRefinement, kGradation);
     if (s.field.is_uniform()) {
       s.thin = ThinWall{};  // no wall thinner than the spacing

@@ -24,7 +24,7 @@ bool on_wall(const Samples& s, std::size_t i) { return on_face(s, i) || (on_edge
 }  // namespace
 
 std::vector<double> wall_radii(const Samples& s, double spacing, const std::vector<std::array<int, 2>>& wedges,
-                               const Progress& progress) {
+                               double wedge_dot, const Progress& progress) {
   // The ball tangent at p (outward normal n) through q has radius |q - p|^2 / (2 (p - q).n): the
   // shrinking-ball estimate of the medial radius at p. Only a facing wall counts: across a convex
   // or concave edge the ball shrinks too, but there the axis meets the edge by construction. A
@@ -55,7 +55,7 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
       if (!n) continue;
       grid.any_near(p, reach, [&](int j) {
         if (!facing(*n, j)) return false;
-        if (by_edge && s.face[i] >= 0 && s.face[j] >= 0 && s.face[j] != s.face[i] &&
+        if (by_edge && s.face[i] >= 0 && s.face[j] >= 0 && s.face[j] != s.face[i] && dot3(*n, s.normal[j]) < wedge_dot &&
             std::binary_search(wedge.begin(), wedge.end(), pair_key(s.face[i], s.face[j])))
           return false;
         const Point3 d{s.points[j][0] - p[0], s.points[j][1] - p[1], s.points[j][2] - p[2]};

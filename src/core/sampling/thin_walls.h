@@ -20,11 +20,12 @@ namespace cadmedial {
 /// bound: the samples need not sit opposite). Only balls smaller than `spacing` are looked for;
 /// infinity elsewhere: on edge and corner samples, and where no wall faces within two spacings.
 /// Within a spacing of a convex-edge sample, the two faces of a convex edge (`wedges`, face index
-/// pairs) do not count as walls for each other: a sharp wedge thins to nothing at its edge, where
-/// the completion (4.2.2) joins the axis to the edge. (The faces of a thin plate's rim edges are
-/// not such a pair: top and bottom face each other up to the rim.) Progress is reported (and so can cancel) every few thousand samples.
+/// pairs) do not count as walls for each other where their normals' dot product is below
+/// `wedge_dot` (1: anywhere): a sharp wedge thins to nothing at its edge, where the completion
+/// (4.2.2) joins the axis to the edge. (The faces of a thin plate's rim edges are not such a
+/// pair: top and bottom face each other up to the rim.) Progress is reported (and so can cancel) every few thousand samples.
 std::vector<double> wall_radii(const Samples& samples, double spacing, const std::vector<std::array<int, 2>>& wedges,
-                               const Progress& progress = {});
+                               double wedge_dot = 1.0, const Progress& progress = {});
 
 struct ThinWall {
   double radius = std::numeric_limits<double>::infinity();  ///< the smallest of wall_radii
@@ -35,7 +36,7 @@ struct ThinWall {
 ThinWall thinnest_wall(const Samples& samples, const std::vector<double>& radii);
 inline ThinWall thinnest_wall(const Samples& samples, double spacing, const std::vector<std::array<int, 2>>& wedges,
                               const Progress& progress = {}) {
-  return thinnest_wall(samples, wall_radii(samples, spacing, wedges, progress));
+  return thinnest_wall(samples, wall_radii(samples, spacing, wedges, 1.0, progress));
 }
 
 }  // namespace cadmedial
