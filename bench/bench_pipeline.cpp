@@ -64,8 +64,9 @@ Row run(const TopoDS_Solid& solid, std::size_t target, double spacing0) {
   row.samples = result.stats.samples;
   row.vertices = result.mesh.num_vertices();
   row.faces = result.mesh.num_faces();
-  // The same samples again (sampling is deterministic), for the yardstick.
-  row.bare_delaunay = bare_delaunay_seconds(sample_solid(solid, features, h).points);
+  // The same samples again (sampling is deterministic; thin walls refined as the pipeline does),
+  // for the yardstick.
+  row.bare_delaunay = bare_delaunay_seconds(sample_shape(solid, params.sampling).front().points);
   return row;
 }
 

@@ -219,6 +219,23 @@ SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& para
   }
 }
 
+std::vector<Samples> sample_shape(const TopoDS_Shape& shape, const SamplingParams& params) {
+  ComputeParams p;
+  p.sampling = params;
+  check_params(p);
+  try {
+    const std::vector<TopoDS_Solid> solids = extract_solids(shape);
+    std::vector<Features> features;
+    for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
+    double spacing = plan(measure(solids, features), params).spacing;
+    std::vector<Samples> out;
+    for (SolidSampling& s : sample_solids(solids, features, params, spacing, {})) out.push_back(std::move(s.samples));
+    return out;
+  } catch (const Standard_Failure& err) {
+    throw GeometryError(std::string("cannot sample the shape: ") + err.GetMessageString());
+  }
+}
+
 ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams& params, const Progress& progress) {
   check_params(params);
   const auto t_total = Clock::now();

@@ -8,6 +8,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include "../progress.h"
+#include "../sampling/samples.h"
 #include "../types.h"
 
 namespace cadmedial {
@@ -63,6 +64,10 @@ struct SamplingPlan {
   std::size_t estimated_samples = 0;
 };
 SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& params);
+
+/// Each solid's boundary samples as compute_medial_axis takes them (the same spacing, calibration
+/// and thin-wall refinement), e.g. for a benchmark's yardstick.
+std::vector<Samples> sample_shape(const TopoDS_Shape& shape, const SamplingParams& params);
 
 /// Computes the inner medial axis of every solid of `shape`, each on its own; face_solid holds the
 /// solid's index. Throws InvalidInput (bad shape or parameters), GeometryError, or Cancelled.
