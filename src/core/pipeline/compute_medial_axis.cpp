@@ -198,28 +198,9 @@ void warn_of_thin_walls(const ThinWall& w, const SpacingField& field, int solid,
   warnings.push_back(msg.str());
 }
 
-}  // namespace
-
-SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& params) {
-  ComputeParams p;
-  p.sampling = params;
-  check_params(p);
-  try {
-    // The preview must match the compute: sample as compute_medial_axis does and count.
-    const std::vector<TopoDS_Solid> solids = extract_solids(shape);
-    std::vector<Features> features;
-    for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
-    SamplingPlan sp = plan(measure(solids, features), params);
-    std::size_t count = 0;
-    for (const SolidSampling& s : sample_solids(solids, features, params, sp.spacing, {})) count += s.samples.size();
-    sp.estimated_samples = count;
-    return sp;
-  } catch (const Standard_Failure& err) {
-    throw GeometryError(std::string("cannot measure the shape: ") + err.GetMessageString());
-  }
-}
-
-std::vector<Samples> sample_shape(const TopoDS_Shape& shape, const SamplingParams& params) {
+// The solids sampled as compute_medial_axis samples them, with the spacing it settles on.
+std::vector<SolidSampling> sample_as_computed(const TopoDS_Shape& shape, const SamplingParams& params,
+                                              SamplingPlan& sp) {
   ComputeParams p;
   p.sampling = params;
   check_params(p);
@@ -227,13 +208,30 @@ std::vector<Samples> sample_shape(const TopoDS_Shape& shape, const SamplingParam
     const std::vector<TopoDS_Solid> solids = extract_solids(shape);
     std::vector<Features> features;
     for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
-    double spacing = plan(measure(solids, features), params).spacing;
-    std::vector<Samples> out;
-    for (SolidSampling& s : sample_solids(solids, features, params, spacing, {})) out.push_back(std::move(s.samples));
-    return out;
+    sp = plan(measure(solids, features), params);
+    std::vector<SolidSampling> sampled = sample_solids(solids, features, params, sp.spacing, {});
+    sp.estimated_samples = 0;
+    for (const SolidSampling& s : sampled) sp.estimated_samples += s.samples.size();
+    return sampled;
   } catch (const Standard_Failure& err) {
     throw GeometryError(std::string("cannot sample the shape: ") + err.GetMessageString());
   }
+}
+
+}  // namespace
+
+SamplingPlan plan_sampling(const TopoDS_Shape& shape, const SamplingParams& params) {
+  // The preview must match the compute: sample as compute_medial_axis does and count.
+  SamplingPlan sp;
+  sample_as_computed(shape, params, sp);
+  return sp;
+}
+
+std::vector<Samples> sample_shape(const TopoDS_Shape& shape, const SamplingParams& params) {
+  SamplingPlan sp;
+  std::vector<Samples> out;
+  for (SolidSampling& s : sample_as_computed(shape, params, sp)) out.push_back(std::move(s.samples));
+  return out;
 }
 
 ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams& params, const Progress& progress) {
