@@ -1,5 +1,6 @@
 #include "complete_medial_axis.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
@@ -65,10 +66,12 @@ void complete_convex_edges(const Delaunay& dt, const std::vector<Vertex>& handle
 void complete_corners(const Delaunay& dt, const std::vector<Vertex>& handle, const Samples& samples,
                       const Selection& sel, MedialComplex& mc, MedialAxisStats& st) {
   std::vector<Delaunay::Facet> facets;
+  std::vector<std::array<int, 2>> edges;  // Voronoi edges joined to p, by their cell ids
   std::set<int> recorded(mc.star_sample.begin(), mc.star_sample.end());
   for (size_t p = 0; p < samples.size(); ++p) {
     if (samples.tag[p] != SampleTag::Corner || !samples.nonconcave[p] || handle[p] == Vertex()) continue;
     facets.clear();
+    edges.clear();
     dt.finite_incident_facets(handle[p], std::back_inserter(facets));
     for (const auto& [c, i] : facets) {
       int ab[2], k = 0;
@@ -80,7 +83,13 @@ void complete_corners(const Delaunay& dt, const std::vector<Vertex>& handle, con
         continue;
       const Cell n = c->neighbor(i);
       if (dt.is_infinite(c) || dt.is_infinite(n)) continue;
-      mc.add({MedialComplex::sample_node(static_cast<int>(p)), mc.cell_id(c), mc.cell_id(n)}, FaceKind::Corner);
+      edges.push_back({std::min(mc.cell_id(c), mc.cell_id(n)), std::max(mc.cell_id(c), mc.cell_id(n))});
+    }
+    // CGAL lists a facet from whichever of its two cells lies lower in memory, in an order that
+    // follows: sorted by cell ids, the triangles (and so the output) are the same in every run.
+    std::sort(edges.begin(), edges.end());
+    for (const auto& [a, b] : edges) {
+      mc.add({MedialComplex::sample_node(static_cast<int>(p)), a, b}, FaceKind::Corner);
       record_star(dt, handle[p], static_cast<int>(p), mc, recorded);
       ++st.corner_triangles;
     }
