@@ -5,6 +5,8 @@
 #include <numeric>
 #include <tuple>
 
+#include "two_cores.h"
+
 namespace cadmedial {
 
 const char* face_kind_name(FaceKind kind) {
@@ -41,13 +43,62 @@ void MedialMesh::append(const MedialMesh& other) {
   edge_solid.insert(edge_solid.end(), other.edge_solid.begin(), other.edge_solid.end());
 }
 
+namespace {
+
+// Sorts v by `less` on two cores when it is long: each half, then one merge. `less` must be a
+// strict weak order; elements it finds equal may end up in another order than std::sort's.
+template <class T, class Less>
+void sort_on_two_cores(std::vector<T>& v, const Less& less) {
+  if (v.size() < 8192) {
+    std::sort(v.begin(), v.end(), less);
+    return;
+  }
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  internal::on_two_cores([&] { std::sort(v.begin(), mid, less); },
+                         [&](const std::atomic<bool>&) { std::sort(mid, v.end(), less); });
+  std::vector<T> out(v.size());
+  std::merge(v.begin(), mid, mid, v.end(), out.begin(), less);
+  v.swap(out);
+}
+
+// Calls fn(begin, end) on [0, n/2) here and [n/2, n) on a second thread when n is large.
+template <class Fn>
+void halves_on_two_cores(std::size_t n, const Fn& fn) {
+  if (n < 8192) {
+    fn(std::size_t{0}, n);
+    return;
+  }
+  internal::on_two_cores([&] { fn(std::size_t{0}, n / 2); }, [&](const std::atomic<bool>&) { fn(n / 2, n); });
+}
+
+}  // namespace
+
 void MedialMesh::sort_canonically() {
   const std::size_t nv = vertices.size();
+  // Vertices by (position, radius), the keys side by side rather than behind indices.
+  struct VertexKey {
+    Point3 p;
+    double r;
+    int index;
+  };
+  auto vertex_less = [](const VertexKey& a, const VertexKey& b) { return a.p < b.p || (a.p == b.p && a.r < b.r); };
+  std::vector<VertexKey> keys(nv);
+  for (std::size_t i = 0; i < nv; ++i) keys[i] = {vertices[i], radius[i], static_cast<int>(i)};
+  sort_on_two_cores(keys, vertex_less);
   std::vector<int> order(nv);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return vertices[a] < vertices[b] || (vertices[a] == vertices[b] && radius[a] < radius[b]);
-  });
+  bool ties = false;
+  for (std::size_t i = 0; i < nv; ++i) {
+    order[i] = keys[i].index;
+    ties = ties || (i > 0 && !vertex_less(keys[i - 1], keys[i]));
+  }
+  if (ties) {
+    // Equal vertices (position and radius) go in std::sort's order, as they always have: which of
+    // them a face uses is in the file.
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      return vertices[a] < vertices[b] || (vertices[a] == vertices[b] && radius[a] < radius[b]);
+    });
+  }
   std::vector<int> new_index(nv);
   for (std::size_t i = 0; i < nv; ++i) new_index[order[i]] = static_cast<int>(i);
   std::vector<Point3> v2(nv);
@@ -58,35 +109,58 @@ void MedialMesh::sort_canonically() {
 
   // Renumber and rotate each polygon in place, then sort face indices by (solid, corners, kind)
   // over the flat arrays: no per-polygon allocation (half a million faces at 250k samples).
-  for (std::size_t f = 0; f < num_faces(); ++f) {
-    int* b = face_vertices.data() + face_start[f];
-    int* e = face_vertices.data() + face_start[f + 1];
-    for (int* k = b; k != e; ++k) *k = new_index[*k];
-    std::rotate(b, std::min_element(b, e), e);
-    // Polygons are not oriented (the triangulation's circulators run either way): walk towards
-    // the smaller neighbour.
-    if (e - b > 2 && *(e - 1) < b[1]) std::reverse(b + 1, e);
+  const std::size_t nf = num_faces();
+  halves_on_two_cores(nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      int* b = face_vertices.data() + face_start[f];
+      int* e = face_vertices.data() + face_start[f + 1];
+      for (int* k = b; k != e; ++k) *k = new_index[*k];
+      std::rotate(b, std::min_element(b, e), e);
+      // Polygons are not oriented (the triangulation's circulators run either way): walk towards
+      // the smaller neighbour.
+      if (e - b > 2 && *(e - 1) < b[1]) std::reverse(b + 1, e);
+    }
+  });
+  // The solid and first three corners beside the index decide most comparisons; equal ones look
+  // at the whole polygons (equal faces are equal in the file, in whichever order).
+  struct FaceKey {
+    int solid;
+    std::array<int, 3> head;  ///< first corners, -1 past a shorter polygon's end
+    int index;
+  };
+  std::vector<FaceKey> fkeys(nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const int n = face_size(f);
+    const int* c = face(f);
+    fkeys[f] = {solid[f], {n > 0 ? c[0] : -1, n > 1 ? c[1] : -1, n > 2 ? c[2] : -1}, static_cast<int>(f)};
   }
-  std::vector<int> forder(num_faces());
-  std::iota(forder.begin(), forder.end(), 0);
-  std::sort(forder.begin(), forder.end(), [&](int a, int b) {
-    if (solid[a] != solid[b]) return solid[a] < solid[b];
+  auto face_less = [&](const FaceKey& x, const FaceKey& y) {
+    if (x.solid != y.solid) return x.solid < y.solid;
+    if (x.head != y.head) return x.head < y.head;
+    const int a = x.index, b = y.index;
     const int *pa = face(a), *pb = face(b);
     if (std::lexicographical_compare(pa, pa + face_size(a), pb, pb + face_size(b))) return true;
     if (std::lexicographical_compare(pb, pb + face_size(b), pa, pa + face_size(a))) return false;
     return kind[a] < kind[b];
+  };
+  sort_on_two_cores(fkeys, face_less);
+  std::vector<int> sorted_start(nf + 1, 0);
+  for (std::size_t i = 0; i < nf; ++i) sorted_start[i + 1] = sorted_start[i] + face_size(fkeys[i].index);
+  std::vector<int> sorted_vertices(face_vertices.size());
+  std::vector<FaceKind> sorted_kind(nf);
+  std::vector<int> sorted_solid(nf);
+  halves_on_two_cores(nf, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const int f = fkeys[i].index;
+      std::copy(face(f), face(f) + face_size(f), sorted_vertices.begin() + sorted_start[i]);
+      sorted_kind[i] = kind[f];
+      sorted_solid[i] = solid[f];
+    }
   });
-  MedialMesh sorted;
-  sorted.face_vertices.reserve(face_vertices.size());
-  std::vector<int> poly;
-  for (int f : forder) {
-    poly.assign(face(f), face(f) + face_size(f));
-    sorted.add_face(poly, kind[f], solid[f]);
-  }
-  face_start.swap(sorted.face_start);
-  face_vertices.swap(sorted.face_vertices);
-  kind.swap(sorted.kind);
-  solid.swap(sorted.solid);
+  face_start.swap(sorted_start);
+  face_vertices.swap(sorted_vertices);
+  kind.swap(sorted_kind);
+  solid.swap(sorted_solid);
 
   std::vector<std::array<int, 3>> segs(edges.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {

@@ -2,6 +2,7 @@
 // non-concave corners (4.2.3).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -16,9 +17,13 @@ void complete_convex_edges(const Delaunay& dt, const std::vector<Vertex>& handle
                            MedialComplex& mc, MedialAxisStats& st);
 void complete_corners(const Delaunay& dt, const std::vector<Vertex>& handle, const Samples& samples,
                       const Selection& sel, MedialComplex& mc, MedialAxisStats& st);
+/// mc's star_start and star_cells: the Voronoi vertices (incident cells, by id) of each sample
+/// the completion recorded in mc.star_sample. On two cores.
+void star_cells(MedialComplex& mc, std::size_t samples);
 /// Cone triangles that make each completed sample's rim one path (after separation: `faces`
-/// are the inner faces, `inside` the cell labels). Returns the faces added to mc.
-std::vector<int> fan_completions(MedialComplex& mc, const std::vector<int>& faces,
-                                 const std::vector<std::uint8_t>& inside, MedialAxisStats& st);
+/// are the inner faces, `inside` the cell labels), as corners of edge-completion faces for mc,
+/// in order. Reads mc only: it may run beside collapse_fillers.
+std::vector<std::array<int, 3>> fan_completions(const MedialComplex& mc, const std::vector<int>& faces,
+                                                const std::vector<std::uint8_t>& inside);
 
 }  // namespace cadmedial::internal

@@ -7,16 +7,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
-#include <map>
-#include <set>
+#include <optional>
 #include <tuple>
-#include <unordered_map>
 
 #include "preserve_topology.h"
 #include "complete_medial_axis.h"
 #include "geometry_3.h"
+#include "../two_cores.h"
 
 namespace cadmedial::internal {
 
@@ -178,19 +178,156 @@ int find_root(std::vector<int>& parent, int x) {
   return x;
 }
 
+// Faces by their sorted corners, each with the index of the first face that had them: open
+// addressing over flat keys (a std::map of vectors allocated a key per merged face, 90k at 65k
+// samples).
+class CornerSets {
+ public:
+  /// The value stored with the ascending corners key[0..n); if there is none, stores `value` and
+  /// returns -1.
+  int find_or_add(const int* key, int n, int value) {
+    if (2 * (values_.size() + 1) > slots_.size()) grow();
+    const std::uint64_t h = hash(key, n);
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t s = h & mask;; s = (s + 1) & mask) {
+      const int e = slots_[s];
+      if (e < 0) {
+        slots_[s] = static_cast<int>(values_.size());
+        keys_.insert(keys_.end(), key, key + n);
+        start_.push_back(static_cast<int>(keys_.size()));
+        values_.push_back(value);
+        hashes_.push_back(h);
+        return -1;
+      }
+      if (hashes_[e] == h && start_[e + 1] - start_[e] == n && std::equal(key, key + n, keys_.begin() + start_[e]))
+        return values_[e];
+    }
+  }
+
+  /// The number of keys, and the value stored with the k-th one added.
+  int size() const { return static_cast<int>(values_.size()); }
+  int value(int k) const { return values_[k]; }
+  /// The value stored here with the k-th key added to `other`, -1 if none.
+  int find(const CornerSets& other, int k) const {
+    if (slots_.empty()) return -1;
+    const std::uint64_t h = other.hashes_[k];
+    const int n = other.start_[k + 1] - other.start_[k];
+    const auto key = other.keys_.begin() + other.start_[k];
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t s = h & mask;; s = (s + 1) & mask) {
+      const int e = slots_[s];
+      if (e < 0) return -1;
+      if (hashes_[e] == h && start_[e + 1] - start_[e] == n && std::equal(key, key + n, keys_.begin() + start_[e]))
+        return values_[e];
+    }
+  }
+
+ private:
+  static std::uint64_t hash(const int* key, int n) {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull ^ static_cast<std::uint64_t>(n);
+    for (int k = 0; k < n; ++k) {
+      h ^= static_cast<std::uint32_t>(key[k]);
+      h *= 0xff51afd7ed558ccdull;
+      h ^= h >> 32;
+    }
+    return h;
+  }
+  void grow() {
+    slots_.assign(std::max<std::size_t>(1024, 2 * slots_.size()), -1);
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t e = 0; e < values_.size(); ++e) {
+      std::size_t s = hashes_[e] & mask;
+      while (slots_[s] >= 0) s = (s + 1) & mask;
+      slots_[s] = static_cast<int>(e);
+    }
+  }
+  std::vector<int> slots_;  ///< entry per slot, -1 empty; a power of two, at most half full
+  std::vector<int> start_{0}, keys_, values_;
+  std::vector<std::uint64_t> hashes_;
+};
+
+// One part of the faces (a range of them) rewritten in place by rewrite_faces.
+struct MergedPart {
+  std::size_t faces = 0, nodes = 0;  ///< kept, from the part's first face and node on
+  std::vector<int> points;
+  std::vector<std::array<int, 3>> segments;
+  CornerSets seen;  ///< sorted corners of the merged faces -> face (from the part's first)
+};
+
+// Rewrites faces [begin, end) of mc in place, each corner replaced by its group's (rep): repeated
+// corners go, then faces left with fewer than three, then copies of an earlier face of the part.
+// The faces kept move down over those that go (nothing is allocated: mc's arrays are a million
+// entries at 65k samples, and fresh pages cost more than the rewrite). `base` is mc.start[begin]
+// as it was: the part before may rewrite that entry meanwhile, and it is all this part writes
+// outside its own entries (begin, end] and nodes. `tick(f)` before each face: false stops.
+template <class Tick>
+void rewrite_faces(MedialComplex& mc, const std::vector<int>& rep, const std::vector<std::uint8_t>& in_group,
+                   std::size_t begin, std::size_t end, int base, MergedPart& out, const Tick& tick) {
+  int* const nodes = mc.nodes.data() + base;
+  std::size_t kept = begin, at = 0;  // next face and node written
+  int next = base;                   // where the face being read starts (mc.start moves under us)
+  std::vector<int> key_nodes;
+  for (std::size_t f = begin; f < end; ++f) {
+    if (!tick(f)) return;
+    const int from = next, to = mc.start[f + 1];
+    next = to;
+    // Written over the face's own corners or earlier ones: never ahead of what is read.
+    const std::size_t first_node = at;
+    // Only faces with a corner in a merged group can repeat one or duplicate another face.
+    bool merged = false;
+    for (int k = from; k < to; ++k) {
+      int node = mc.nodes[k];
+      if (node >= 0) merged = merged || in_group[node], node = rep[node];
+      if (at == first_node || nodes[at - 1] != node) nodes[at++] = node;
+    }
+    while (at > first_node + 1 && nodes[first_node] == nodes[at - 1]) --at;
+    const int* face = nodes + first_node;
+    const std::size_t size = at - first_node;
+    // A sphere's facets all shrink to its centre: keep the point.
+    if (size == 1 && face[0] >= 0) out.points.push_back(face[0]);
+    // A Voronoi facet whose corners merged into two is a segment now: where the axis is a curve,
+    // cospherical samples (a circle of edge samples around it) make these, and they may be all
+    // that joins the axis across that circle.
+    if (size == 2 && face[0] >= 0 && face[1] >= 0 && mc.kind[f] == FaceKind::Voronoi)
+      out.segments.push_back({std::min(face[0], face[1]), std::max(face[0], face[1]), mc.filler[f]});
+    bool keep = size >= 3;
+    if (keep && merged) {
+      key_nodes.assign(face, face + size);
+      std::sort(key_nodes.begin(), key_nodes.end());
+      int first = -1;
+      if (std::unique(key_nodes.begin(), key_nodes.end()) != key_nodes.end() ||
+          (first = out.seen.find_or_add(key_nodes.data(), static_cast<int>(size), static_cast<int>(kept - begin))) >=
+              0) {
+        // One face: it is part of the axis proper if any of its copies is.
+        if (first >= 0) mc.filler[begin + first] = mc.filler[begin + first] && mc.filler[f];
+        keep = false;
+      }
+    }
+    if (!keep) {
+      at = first_node;
+      continue;
+    }
+    mc.kind[kept] = mc.kind[f];
+    mc.dual[kept] = mc.dual[f];
+    mc.filler[kept] = mc.filler[f];
+    mc.start[++kept] = base + static_cast<int>(at);
+  }
+  out.faces = kept - begin;
+  out.nodes = at;
+}
+
 }  // namespace
 
 // Cospherical samples (regular edge samples and their triplets form right prisms, which are
 // inscribed in spheres) give several Delaunay cells with one circumcentre: the true Voronoi
 // diagram has a single vertex there. Merging them removes zero-length Voronoi edges, which would
 // otherwise leave pinholes wherever the perturbation picked one selected facet over another.
-void merge_coincident_cells(MedialComplex& mc, double eps, const Progress& progress) {
+std::vector<int> coincident_cells(const MedialComplex& mc, double eps) {
   const size_t n = mc.num_cells();
   // Cells that share a circumcentre come from one cospherical set of samples, so they are
   // adjacent in the triangulation: walk neighbours.
   std::vector<int> rep(n, -1), mark(n, -1), stack;
   for (size_t id = 0; id < n; ++id) {
-    if (id % 65536 == 0) report(progress, "inner", 0.15 * static_cast<double>(id) / n);
     if (rep[id] >= 0) continue;
     rep[id] = static_cast<int>(id);
     const Point3 c = mc.centers[id];
@@ -208,6 +345,11 @@ void merge_coincident_cells(MedialComplex& mc, double eps, const Progress& progr
       }
     }
   }
+  return rep;
+}
+
+void merge_coincident_cells(MedialComplex& mc, std::vector<int> rep, const Progress& progress) {
+  const size_t n = mc.num_cells();
   // The merged vertex takes the smallest of its members' positions: CGAL visits edges in an order
   // that depends on memory addresses, so "the first member" would differ from run to run.
   for (size_t id = 0; id < n; ++id) {
@@ -220,51 +362,60 @@ void merge_coincident_cells(MedialComplex& mc, double eps, const Progress& progr
   for (int& c : mc.star_cells) c = rep[c];
   std::vector<int> group_size(n, 0);
   for (size_t id = 0; id < n; ++id) ++group_size[rep[id]];
-  // Rewrite faces: drop repeated corners, then faces left with fewer than three, then duplicates.
-  std::vector<int> start{0}, nodes;
-  std::vector<FaceKind> kind;
-  std::vector<std::array<int, 2>> dual;
-  std::vector<std::uint8_t> filler;
-  std::map<std::vector<int>, int> seen;  // sorted corners -> face
-  std::vector<int> face, key_nodes;
-  for (size_t f = 0; f < mc.size(); ++f) {
-    face.clear();
-    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
-      const int node = mc.nodes[k] >= 0 ? rep[mc.nodes[k]] : mc.nodes[k];
-      if (face.empty() || face.back() != node) face.push_back(node);
-    }
-    while (face.size() > 1 && face.front() == face.back()) face.pop_back();
-    // A sphere's facets all shrink to its centre: keep the point.
-    if (face.size() == 1 && face[0] >= 0) mc.points.push_back(face[0]);
-    // A Voronoi facet whose corners merged into two is a segment now: where the axis is a curve,
-    // cospherical samples (a circle of edge samples around it) make these, and they may be all
-    // that joins the axis across that circle.
-    if (face.size() == 2 && face[0] >= 0 && face[1] >= 0 && mc.kind[f] == FaceKind::Voronoi)
-      mc.segments.push_back({std::min(face[0], face[1]), std::max(face[0], face[1]), mc.filler[f]});
-    if (face.size() < 3) continue;
-    // Only faces with a corner in a merged group can repeat one or duplicate another face.
-    bool merged = false;
-    for (int k = mc.start[f]; k < mc.start[f + 1] && !merged; ++k)
-      merged = mc.nodes[k] >= 0 && group_size[rep[mc.nodes[k]]] > 1;
-    if (merged) {
-      key_nodes = face;
-      std::sort(key_nodes.begin(), key_nodes.end());
-      if (std::unique(key_nodes.begin(), key_nodes.end()) != key_nodes.end()) continue;
-      const auto [it, fresh] = seen.emplace(key_nodes, static_cast<int>(kind.size()));
-      if (!fresh) {
-        // One face: it is part of the axis proper if any of its copies is.
-        filler[it->second] = filler[it->second] && mc.filler[f];
-        continue;
-      }
-    }
-    nodes.insert(nodes.end(), face.begin(), face.end());
-    start.push_back(static_cast<int>(nodes.size()));
-    kind.push_back(mc.kind[f]);
-    dual.push_back(mc.dual[f]);
-    filler.push_back(mc.filler[f]);
+  std::vector<std::uint8_t> in_group(n);
+  for (size_t id = 0; id < n; ++id) in_group[id] = group_size[rep[id]] > 1;
+  // Rewrite faces: drop repeated corners, then faces left with fewer than three, then duplicates;
+  // each half of the faces on one core, then the second half's copies of the first's go.
+  const std::size_t nf = mc.size(), mid = nf / 2;
+  const int upper_base = mc.start[mid];
+  MergedPart lower, upper;
+  on_two_cores(
+      [&] {
+        rewrite_faces(mc, rep, in_group, 0, mid, 0, lower, [&](std::size_t f) {
+          if (f % 65536 == 0) report(progress, "inner", 0.15 * static_cast<double>(f) / (mid + 1));
+          return true;
+        });
+      },
+      [&](const std::atomic<bool>& stop) {
+        rewrite_faces(mc, rep, in_group, mid, nf, upper_base, upper,
+                      [&](std::size_t f) { return f % 16384 != 0 || !stop; });
+      });
+  // The second half's merged faces that copy one of the first half's: each is its key's entry in
+  // upper.seen, in face order.
+  std::vector<std::size_t> copies;
+  for (int k = 0; k < upper.seen.size(); ++k) {
+    const int first = lower.seen.find(upper.seen, k);
+    if (first < 0) continue;
+    const std::size_t u = mid + static_cast<std::size_t>(upper.seen.value(k));
+    mc.filler[first] = mc.filler[first] && mc.filler[u];
+    copies.push_back(u);
   }
-  mc.dual = std::move(dual);
-  mc.filler = std::move(filler);
+  copies.push_back(mid + upper.faces);
+  // The second half's faces down after the first's, in runs between the copies (mc.start[mid] is
+  // the first half's now).
+  std::size_t faces = lower.faces, nodes = static_cast<std::size_t>(mc.start[lower.faces]);
+  for (std::size_t r = 0, u = mid; r < copies.size(); u = copies[r++] + 1) {
+    const std::size_t end = copies[r];
+    if (u >= end) continue;
+    const int from = u == mid ? upper_base : mc.start[u];
+    const int shift = static_cast<int>(nodes) - from;
+    std::copy(mc.nodes.begin() + from, mc.nodes.begin() + mc.start[end], mc.nodes.begin() + nodes);
+    std::copy(mc.kind.begin() + u, mc.kind.begin() + end, mc.kind.begin() + faces);
+    std::copy(mc.dual.begin() + u, mc.dual.begin() + end, mc.dual.begin() + faces);
+    std::copy(mc.filler.begin() + u, mc.filler.begin() + end, mc.filler.begin() + faces);
+    for (std::size_t k = u; k < end; ++k) mc.start[faces + (k - u) + 1] = mc.start[k + 1] + shift;
+    faces += end - u;
+    nodes = static_cast<std::size_t>(mc.start[faces]);
+  }
+  mc.start.resize(faces + 1);
+  mc.nodes.resize(nodes);
+  mc.kind.resize(faces);
+  mc.dual.resize(faces);
+  mc.filler.resize(faces);
+  mc.points.insert(mc.points.end(), lower.points.begin(), lower.points.end());
+  mc.points.insert(mc.points.end(), upper.points.begin(), upper.points.end());
+  mc.segments.insert(mc.segments.end(), lower.segments.begin(), lower.segments.end());
+  mc.segments.insert(mc.segments.end(), upper.segments.begin(), upper.segments.end());
   mc.rep = std::move(rep);
   // One segment per pair, selected if any of its facets was.
   std::sort(mc.segments.begin(), mc.segments.end());
@@ -276,65 +427,86 @@ void merge_coincident_cells(MedialComplex& mc, double eps, const Progress& progr
       unique_segments.push_back(sg);
   }
   mc.segments = std::move(unique_segments);
-  mc.start = std::move(start);
-  mc.nodes = std::move(nodes);
-  mc.kind = std::move(kind);
 }
 
 std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
                                        const InsideTest& inside, MedialAxisStats& st, const Progress& progress) {
-  const size_t n = mc.num_cells();
+  const size_t n = mc.num_cells(), nf = mc.size();
   std::vector<std::uint8_t> label(n, 0);
-  std::vector<int> unsure;
   // 2: a corner of the axis proper; 1: of filler faces only, whose doubtful corners are called
   // outside without asking the B-rep (they lie within the sampling's sag of the surface, where
-  // the Voronoi complex meets the boundary anyway).
-  std::vector<char> used(n, 0);
-  for (size_t f = 0; f < mc.size(); ++f)
-    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k)
-      if (mc.nodes[k] >= 0) used[mc.nodes[k]] = std::max<char>(used[mc.nodes[k]], mc.filler[f] ? 1 : 2);
-  for (int node : mc.points) used[node] = 2;
-  for (const auto& sg : mc.segments)
-    for (int k = 0; k < 2; ++k) used[sg[k]] = std::max<char>(used[sg[k]], sg[2] ? 1 : 2);
+  // the Voronoi complex meets the boundary anyway). The largest over a cell's faces: each core
+  // takes half the faces, and the larger of their two answers counts.
+  std::vector<char> used(n, 0), used_upper(n, 0);
+  auto mark_used = [&mc](std::vector<char>& u, std::size_t begin, std::size_t end) {
+    for (size_t f = begin; f < end; ++f)
+      for (int k = mc.start[f]; k < mc.start[f + 1]; ++k)
+        if (mc.nodes[k] >= 0) u[mc.nodes[k]] = std::max<char>(u[mc.nodes[k]], mc.filler[f] ? 1 : 2);
+  };
+  on_two_cores([&] { mark_used(used, 0, nf / 2); },
+               [&](const std::atomic<bool>&) {
+                 mark_used(used_upper, nf / 2, nf);
+                 for (int node : mc.points) used_upper[node] = 2;
+                 for (const auto& sg : mc.segments)
+                   for (int k = 0; k < 2; ++k) used_upper[sg[k]] = std::max<char>(used_upper[sg[k]], sg[2] ? 1 : 2);
+               });
+  // The samples' votes, half the cells on each core; the cells they leave in doubt in id order.
   const auto [lo, hi] = bounding_box(samples.points);
   const double diag = norm(sub(hi, lo));
-  for (size_t id = 0; id < n; ++id) {
-    if (id % 65536 == 0) report(progress, "inner", 0.2 + 0.2 * static_cast<double>(id) / n);
-    if (!used[id]) continue;
-    const Point3& x = mc.centers[id];
-    // Written so that a NaN centre (a flat cell) is beyond too: GMP aborts on NaN in CGAL's
-    // exact fallback.
-    bool beyond = !(mc.radii[id] <= diag);
-    for (int k = 0; k < 3; ++k) beyond = beyond || !(x[k] >= lo[k] && x[k] <= hi[k]);
-    if (beyond) continue;  // label 0
-    int in = 0, out = 0;
-    for (int j = 0; j < 4; ++j) {
-      const int v = vote(samples, mc.cell_samples[id][j], x);
-      in += v > 0;
-      out += v < 0;
+  auto votes = [&](std::size_t begin, std::size_t end, std::vector<int>& unsure, auto&& tick) {
+    for (size_t id = begin; id < end; ++id) {
+      if (!tick(id)) return;
+      used[id] = std::max(used[id], used_upper[id]);
+      if (!used[id]) continue;
+      const Point3& x = mc.centers[id];
+      // Written so that a NaN centre (a flat cell) is beyond too: GMP aborts on NaN in CGAL's
+      // exact fallback.
+      bool beyond = !(mc.radii[id] <= diag);
+      for (int k = 0; k < 3; ++k) beyond = beyond || !(x[k] >= lo[k] && x[k] <= hi[k]);
+      if (beyond) continue;  // label 0
+      int in = 0, out = 0;
+      for (int j = 0; j < 4; ++j) {
+        const int v = vote(samples, mc.cell_samples[id][j], x);
+        in += v > 0;
+        out += v < 0;
+      }
+      // Inside needs two agreeing votes: a wrong "inside" leaves a vertex out in the open.
+      if (in >= 2 && out == 0)
+        label[id] = 1;
+      else if (out >= 1 && in == 0)
+        label[id] = 0;
+      else
+        unsure.push_back(static_cast<int>(id));
     }
-    // Inside needs two agreeing votes: a wrong "inside" leaves a vertex out in the open.
-    if (in >= 2 && out == 0)
-      label[id] = 1;
-    else if (out >= 1 && in == 0)
-      label[id] = 0;
-    else
-      unsure.push_back(static_cast<int>(id));
-  }
+  };
+  std::vector<int> unsure, unsure_upper;
+  std::optional<ReconstructionSide> mesh;
+  on_two_cores(
+      [&] {
+        votes(0, n / 2, unsure, [&](std::size_t id) {
+          if (id % 65536 == 0) report(progress, "inner", 0.2 + 0.4 * static_cast<double>(id) / n);
+          return true;
+        });
+      },
+      [&](const std::atomic<bool>& stop) {
+        votes(n / 2, n, unsure_upper, [&](std::size_t id) { return id % 16384 != 0 || !stop; });
+        // Built here beside the other half's votes, in case any is in doubt.
+        if (!stop) mesh.emplace(samples, umbrellas);
+      });
+  unsure.insert(unsure.end(), unsure_upper.begin(), unsure_upper.end());
   if (!unsure.empty()) {
     // Then the reconstruction mesh near the cell's samples, then all of it; what it cannot settle
     // goes to the exact B-rep classifier.
-    ReconstructionSide mesh(samples, umbrellas);
     std::vector<int> still;
     for (size_t k = 0; k < unsure.size(); ++k) {
       if (k % 16384 == 0) report(progress, "inner", 0.4 + 0.1 * static_cast<double>(k) / unsure.size());
       const int id = unsure[k];
       std::array<int, 4> near;
       for (int j = 0; j < 4; ++j) near[j] = mc.cell_samples[id][j];
-      int side = mesh.side_near(mc.centers[id], near);
+      int side = mesh->side_near(mc.centers[id], near);
       // Within the sag of the cell's own triangles is within the sag of the mesh: the whole mesh
       // (its tree costs 0.1 s to build at 65k samples) could not tell either.
-      if (side == -1 && used[id] == 2) side = mesh.side(mc.centers[id]);
+      if (side == -1 && used[id] == 2) side = mesh->side(mc.centers[id]);
       if (side >= 0)
         label[id] = static_cast<std::uint8_t>(side);
       else if (used[id] == 2)
@@ -361,25 +533,37 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
 // equivalent to the solid) and any other piece that reaches the boundary.
 MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
                          int solid_index, MedialAxisStats& st, const Progress& progress) {
-  std::vector<int> inner;
-  for (size_t f = 0; f < mc.size(); ++f) {
-    bool in = true;
-    for (int k = mc.start[f]; k < mc.start[f + 1] && in; ++k)
-      if (mc.nodes[k] >= 0 && !inside[mc.nodes[k]]) in = false;
-    if (in) inner.push_back(static_cast<int>(f));
-  }
+  // Half the faces on each core.
+  auto inner_faces = [&](std::size_t begin, std::size_t end, std::vector<int>& out) {
+    for (size_t f = begin; f < end; ++f) {
+      bool in = true;
+      for (int k = mc.start[f]; k < mc.start[f + 1] && in; ++k)
+        if (mc.nodes[k] >= 0 && !inside[mc.nodes[k]]) in = false;
+      if (in) out.push_back(static_cast<int>(f));
+    }
+  };
+  std::vector<int> inner, inner_upper;
+  on_two_cores([&] { inner_faces(0, mc.size() / 2, inner); },
+               [&](const std::atomic<bool>&) { inner_faces(mc.size() / 2, mc.size(), inner_upper); });
+  inner.insert(inner.end(), inner_upper.begin(), inner_upper.end());
   // The Voronoi part first, its topology repaired; then the completion triangles that keep it,
-  // the paper's before the fans that close their rims.
+  // the paper's before the fans that close their rims. The fans on the second core meanwhile
+  // (both only read mc).
   report(progress, "inner", 0.72);
-  const std::vector<int> fans = fan_completions(mc, inner, inside, st);
-  report(progress, "inner", 0.75);
   std::vector<int> voronoi, completion;
   for (int f : inner) (mc.kind[f] == FaceKind::Voronoi ? voronoi : completion).push_back(f);
-  completion.insert(completion.end(), fans.begin(), fans.end());
   std::vector<std::array<int, 3>> segments;
   for (const auto& sg : mc.segments)
     if (inside[sg[0]] && inside[sg[1]]) segments.push_back(sg);
-  AxisCells repaired = collapse_fillers(mc, voronoi, segments, st);
+  AxisCells repaired;
+  std::vector<std::array<int, 3>> fans;
+  on_two_cores([&] { repaired = collapse_fillers(mc, voronoi, segments, st); },
+               [&](const std::atomic<bool>&) { fans = fan_completions(mc, inner, inside); });
+  for (const auto& t : fans) {
+    completion.push_back(static_cast<int>(mc.size()));
+    mc.add({t[0], t[1], t[2]}, FaceKind::Edge);
+  }
+  st.fan_triangles += fans.size();
   report(progress, "inner", 0.85);
   const AxisCells cells = attach_by_expansion(mc, std::move(repaired), completion, st);
   report(progress, "inner", 0.9);
@@ -389,39 +573,42 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
   // corners) is medial axis that a too coarse sampling cut off from the rest (a neck thinner than
   // the spacing): it is kept.
   const size_t nf = cells.faces.size(), items = nf + cells.edges.size();
-  auto corners_of = [&](size_t i, std::vector<int>& out) {
-    out.clear();
-    if (i < nf)
-      out.assign(mc.nodes.begin() + mc.start[cells.faces[i]], mc.nodes.begin() + mc.start[cells.faces[i] + 1]);
-    else
-      out.assign(cells.edges[i - nf].begin(), cells.edges[i - nf].end());
+  auto corners_of = [&](size_t i) -> std::pair<const int*, const int*> {
+    if (i < nf) return {mc.nodes.data() + mc.start[cells.faces[i]], mc.nodes.data() + mc.start[cells.faces[i] + 1]};
+    const auto& e = cells.edges[i - nf];
+    return {e.data(), e.data() + 2};
   };
   NodeMap<int> node_owner(mc.num_cells(), samples.size(), -1);
-  std::vector<int> parent(items), corners;
+  std::vector<int> parent(items);
   std::iota(parent.begin(), parent.end(), 0);
   for (size_t i = 0; i < items; ++i) {
-    corners_of(i, corners);
-    for (int node : corners) {
-      int& owner = node_owner[node];
+    const auto [begin, end] = corners_of(i);
+    for (const int* node = begin; node != end; ++node) {
+      int& owner = node_owner[*node];
       if (owner < 0)
         owner = static_cast<int>(i);
       else
         parent[find_root(parent, static_cast<int>(i))] = find_root(parent, owner);
     }
   }
-  std::unordered_map<int, std::pair<int, int>> piece;  // root -> (items, completion faces)
+  // Per root: its piece's items and completion faces (flat arrays over the items).
+  std::vector<int> root(items), piece_items(items, 0), piece_completion(items, 0);
   for (size_t i = 0; i < items; ++i) {
-    auto& p = piece[find_root(parent, static_cast<int>(i))];
-    ++p.first;
-    p.second += i < nf && mc.kind[cells.faces[i]] != FaceKind::Voronoi;
+    root[i] = find_root(parent, static_cast<int>(i));
+    ++piece_items[root[i]];
+    piece_completion[root[i]] += i < nf && mc.kind[cells.faces[i]] != FaceKind::Voronoi;
   }
-  st.components = piece.size();
-  int best = -1, best_size = 0;
-  for (const auto& [root, p] : piece)
-    if (p.first > best_size || (p.first == best_size && root < best)) best = root, best_size = p.first;
-  std::set<int> keep{best};
-  for (const auto& [root, p] : piece)
-    if (p.second >= 8 && p.first >= best_size / 100) keep.insert(root);
+  st.components = 0;
+  int best = -1, best_size = 0;  // the largest piece; of equal ones, the smallest root
+  for (size_t r = 0; r < items; ++r) {
+    if (piece_items[r] == 0) continue;
+    ++st.components;
+    if (piece_items[r] > best_size) best = static_cast<int>(r), best_size = piece_items[r];
+  }
+  std::vector<char> keep(items, 0);
+  if (best >= 0) keep[best] = 1;
+  for (size_t r = 0; r < items; ++r)
+    if (piece_items[r] > 0 && piece_completion[r] >= 8 && piece_items[r] >= best_size / 100) keep[r] = 1;
 
   report(progress, "inner", 0.95);
   MedialMesh mesh;
@@ -443,10 +630,10 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
   };
   std::vector<int> poly;
   for (size_t i = 0; i < items; ++i) {
-    if (!keep.count(find_root(parent, static_cast<int>(i)))) continue;
-    corners_of(i, corners);
+    if (!keep[root[i]]) continue;
+    const auto [begin, end] = corners_of(i);
     poly.clear();
-    for (int node : corners) poly.push_back(vertex(node));
+    for (const int* node = begin; node != end; ++node) poly.push_back(vertex(*node));
     if (i < nf) {
       out.faces.push_back(cells.faces[i]);
       mesh.add_face(poly, mc.kind[cells.faces[i]], solid_index);
@@ -468,7 +655,6 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
   st.filler_faces = 0;
   for (int f : out.faces) st.dropped_faces -= !mc.filler[f], st.filler_faces += mc.filler[f];
   st.bare_edges = out.edges.size();
-  st.euler_characteristic = euler_characteristic(mesh);
   return mesh;
 }
 

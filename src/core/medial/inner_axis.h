@@ -14,13 +14,18 @@
 
 namespace cadmedial::internal {
 
-/// Merges cells whose circumcentres lie within eps (cospherical samples).
-void merge_coincident_cells(MedialComplex& mc, double eps, const Progress& progress);
+/// Per cell id of mc, the cell it merges into: the first of the neighbouring cells whose
+/// circumcentres lie within eps of its centre (cospherical samples). Reads only mc's centres and
+/// neighbours: it may run beside the completion.
+std::vector<int> coincident_cells(const MedialComplex& mc, double eps);
+/// Merges the cells by `rep` (coincident_cells) in mc's faces, centres and stars.
+void merge_coincident_cells(MedialComplex& mc, std::vector<int> rep, const Progress& progress);
 /// 1 inside, 0 outside, per cell id of mc.
 std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
                                        const InsideTest& inside, MedialAxisStats& st, const Progress& progress);
 /// The faces whose Voronoi vertices are all inside, with the topology of the inner Voronoi complex,
-/// in the pieces kept, as a mesh; segments where facets degenerated to one.
+/// in the pieces kept, as a mesh; segments where facets degenerated to one. Sets the stats of
+/// the faces kept and dropped, not the Euler characteristic.
 MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
                          int solid_index, MedialAxisStats& st, const Progress& progress);
 

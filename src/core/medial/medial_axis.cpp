@@ -1,7 +1,7 @@
 #include "medial_axis.h"
 
 #include <chrono>
-#include <future>
+#include <optional>
 
 #include "../errors.h"
 #include "delaunay_3.h"
@@ -10,8 +10,10 @@
 #include "geometry_3.h"
 #include "inner_axis.h"
 #include "number_cells.h"
+#include "preserve_topology.h"
 #include "select_facets.h"
 #include "triangulate.h"
+#include "../two_cores.h"
 
 namespace cadmedial {
 
@@ -41,35 +43,58 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
 
   t0 = Clock::now();
   const Umbrellas pole_umbrellas = params.plain_medial ? umbrellas_from_poles(dt, samples.size()) : Umbrellas();
-  const Selection sel(samples, params.plain_medial ? pole_umbrellas : umbrellas, params);
+  // The selection's tables of the umbrellas on the second core while the cells are numbered.
+  std::optional<const Selection> selection;
   MedialComplex mc;
-  const std::vector<Cell> cells = number_cells(dt, rank, mc);
+  on_two_cores([&] { number_cells(dt, rank, mc); },
+               [&](const std::atomic<bool>&) {
+                 selection.emplace(samples, params.plain_medial ? pole_umbrellas : umbrellas, params);
+               });
+  const Selection& sel = *selection;
   {
-    // The circumcentres on the second core while the selection walks the cells (it needs only
-    // their samples and neighbours). No progress from there; the future waits for it on any exit.
-    std::future<void> centers = std::async(std::launch::async, [&cells, &mc] { cell_centers(cells, mc); });
-    select_facets(sel, mc, st, progress, !params.plain_medial);
-    centers.get();
+    // The circumcentres of half the cells on each thread before it selects (the selection needs
+    // only their samples and neighbours).
+    const std::size_t nc = mc.num_cells();
+    select_facets(sel, mc, st, progress, !params.plain_medial, [&samples, &mc, nc](int part) {
+      if (part == 0)
+        cell_centers(samples.points, mc, 0, nc / 2);
+      else
+        cell_centers(samples.points, mc, nc / 2, nc);
+    });
   }
   st.timings.push_back({"selection", seconds_since(t0)});
 
   t0 = Clock::now();
-  if (!params.plain_medial) {
-    complete_convex_edges(dt, handle, samples, mc, st);
-    complete_corners(dt, handle, samples, sel, mc, st);
-  }
+  // Which cells merge (it reads only their centres and neighbours) on the second core meanwhile.
+  std::vector<int> rep;
+  on_two_cores(
+      [&] {
+        if (params.plain_medial) return;
+        complete_convex_edges(dt, handle, samples, mc, st);
+        complete_corners(dt, handle, samples, sel, mc, st);
+      },
+      [&](const std::atomic<bool>&) {
+        const auto [lo, hi] = bounding_box(samples.points);
+        rep = coincident_cells(mc, 1e-9 * norm(sub(hi, lo)));
+      });
+  if (!params.plain_medial) star_cells(mc, samples.size());
   st.timings.push_back({"completion", seconds_since(t0)});
   report(progress, "inner", 0.0);
 
   t0 = Clock::now();
-  {
-    const auto [lo, hi] = bounding_box(samples.points);
-    merge_coincident_cells(mc, 1e-9 * norm(sub(hi, lo)), progress);
-  }
+  merge_coincident_cells(mc, std::move(rep), progress);
   report(progress, "inner", 0.2);
   const std::vector<std::uint8_t> in = label_inside(mc, samples, umbrellas, inside, st, progress);
   report(progress, "inner", 0.7);
   MedialMesh mesh = extract_inner(mc, in, samples, solid_index, st, progress);
+  // The triangulation and the complex go while the second core counts the mesh (each about
+  // 10 ms at 65k samples).
+  on_two_cores(
+      [&] {
+        dt.clear();
+        mc = MedialComplex();
+      },
+      [&](const std::atomic<bool>&) { st.euler_characteristic = euler_characteristic(mesh); });
   st.timings.push_back({"inner", seconds_since(t0)});
   if (stats_out) *stats_out = st;
   return mesh;

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <unordered_map>
 #include <unordered_set>
+
+#include "../two_cores.h"
 
 namespace cadmedial::internal {
 
@@ -40,6 +41,11 @@ EdgeIncidence edge_incidence(const MedialComplex& mc, const std::vector<int>& fa
     int slot, pos;  ///< -1 for a lone edge
   };
   std::vector<Entry> entries;
+  {
+    std::size_t sides = lone.size();
+    for (int f : faces) sides += mc.start[f + 1] - mc.start[f];
+    entries.reserve(sides);
+  }
   for (size_t i = 0; i < faces.size(); ++i) {
     for_each_side(mc, faces[i], [&](int k, int a, int b) {
       entries.push_back({edge_key(a, b), static_cast<int>(i), g.face_start.back() + k});
@@ -66,9 +72,17 @@ EdgeIncidence edge_incidence(const MedialComplex& mc, const std::vector<int>& fa
     for (const Entry& e : entries) sorted[fill[bucket(e)]++] = e;
     entries.swap(sorted);
   }
-  for (std::size_t b = 0; b + 1 < bucket_start.size(); ++b)
-    std::sort(entries.begin() + bucket_start[b], entries.begin() + bucket_start[b + 1],
-              [](const Entry& x, const Entry& y) { return x.key < y.key || (x.key == y.key && x.slot < y.slot); });
+  // The buckets on two cores, half the entries each.
+  auto sort_buckets = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t b = begin; b < end; ++b)
+      std::sort(entries.begin() + bucket_start[b], entries.begin() + bucket_start[b + 1],
+                [](const Entry& x, const Entry& y) { return x.key < y.key || (x.key == y.key && x.slot < y.slot); });
+  };
+  const std::size_t buckets = bucket_start.size() - 1;
+  const std::size_t mid = static_cast<std::size_t>(
+      std::lower_bound(bucket_start.begin(), bucket_start.end(), bucket_start.back() / 2) - bucket_start.begin());
+  on_two_cores([&] { sort_buckets(0, std::min(mid, buckets)); },
+               [&](const std::atomic<bool>&) { sort_buckets(std::min(mid, buckets), buckets); });
   g.face_edge.resize(g.face_start.back());
   g.edge_face.reserve(entries.size());
   for (size_t k = 0; k < entries.size(); ++k) {
@@ -90,40 +104,44 @@ std::vector<std::array<int, 2>> essential_bare_edges(const EdgeIncidence& g, con
                                                      const std::vector<char>& removed,
                                                      const std::vector<char>& kept_segment) {
   const size_t ne = g.key.size();
-  std::vector<std::pair<int, int>> ends;  // (corner, edge) of every live edge
+  // Per corner (indexed by node from the smallest, a sample's negative number, up): the live
+  // edges at it, and the bare ones (in edge order). Flat arrays, not a sort of a million ends.
+  int lo = 0, hi = -1;
   for (size_t e = 0; e < ne; ++e) {
     if (removed[e]) continue;
-    ends.push_back({key_low(g.key[e]), static_cast<int>(e)});
-    ends.push_back({key_high(g.key[e]), static_cast<int>(e)});
+    lo = std::min(lo, key_low(g.key[e]));
+    hi = std::max(hi, key_high(g.key[e]));
   }
-  std::sort(ends.begin(), ends.end());
-  // Corners numbered by run of equal corners; degree = live edges at the corner.
-  std::vector<int> degree;
-  std::vector<std::array<int, 2>> edge_ends(ne, {-1, -1});
-  for (size_t k = 0; k < ends.size(); ++k) {
-    if (k == 0 || ends[k].first != ends[k - 1].first) degree.push_back(0);
-    ++degree.back();
-    auto& r = edge_ends[ends[k].second];
-    r[r[0] < 0 ? 0 : 1] = static_cast<int>(degree.size()) - 1;
-  }
+  const std::size_t span = static_cast<std::size_t>(hi - lo + 1);
+  std::vector<int> degree(span, 0), bare_start(span + 1, 0);
   std::vector<char> bare(ne, 0);
-  std::vector<std::vector<int>> bare_at(degree.size());
   for (size_t e = 0; e < ne; ++e) {
-    if (removed[e] || count[e] > 0) continue;
+    if (removed[e]) continue;
+    const int a = key_low(g.key[e]) - lo, b = key_high(g.key[e]) - lo;
+    ++degree[a], ++degree[b];
+    if (count[e] > 0) continue;
     bare[e] = 1;
-    for (int r : edge_ends[e]) bare_at[r].push_back(static_cast<int>(e));
+    ++bare_start[a + 1], ++bare_start[b + 1];
+  }
+  for (std::size_t r = 0; r < span; ++r) bare_start[r + 1] += bare_start[r];
+  std::vector<int> bare_at(bare_start[span]);
+  {
+    std::vector<int> fill(bare_start.begin(), bare_start.end() - 1);
+    for (size_t e = 0; e < ne; ++e)
+      if (bare[e]) bare_at[fill[key_low(g.key[e]) - lo]++] = static_cast<int>(e), bare_at[fill[key_high(g.key[e]) - lo]++] = static_cast<int>(e);
   }
   std::vector<int> stack;
-  for (size_t r = 0; r < degree.size(); ++r)
+  for (size_t r = 0; r < span; ++r)
     if (degree[r] == 1) stack.push_back(static_cast<int>(r));
   while (!stack.empty()) {
     const int r = stack.back();
     stack.pop_back();
     if (degree[r] != 1) continue;
-    for (int e : bare_at[r]) {
+    for (int k = bare_start[r]; k < bare_start[r + 1]; ++k) {
+      const int e = bare_at[k];
       if (!bare[e] || kept_segment[e]) continue;
       bare[e] = 0;
-      for (int s : edge_ends[e])
+      for (int s : {key_low(g.key[e]) - lo, key_high(g.key[e]) - lo})
         if (--degree[s] == 1) stack.push_back(s);
     }
   }
@@ -182,15 +200,22 @@ AxisCells collapse_fillers(const MedialComplex& mc, const std::vector<int>& face
 AxisCells attach_by_expansion(const MedialComplex& mc, AxisCells base, const std::vector<int>& candidates,
                               MedialAxisStats& st) {
   // Only corners and sides of the candidates matter: the sets hold the complex's cells among them.
-  std::unordered_set<int> candidate_corners;
+  // Corners in flat arrays over the candidates' range of nodes (the base has a million sides).
+  int lo = 0, hi = -1;
   for (int f : candidates)
-    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) candidate_corners.insert(mc.nodes[k]);
-  std::unordered_set<int> corners;
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) lo = std::min(lo, mc.nodes[k]), hi = std::max(hi, mc.nodes[k]);
+  const std::size_t span = static_cast<std::size_t>(hi - lo + 1);
+  // 1 a candidate's corner, 2 also one of the complex's.
+  std::vector<std::uint8_t> corner(span, 0);
+  for (int f : candidates)
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) corner[mc.nodes[k] - lo] = 1;
+  auto candidate_corner = [&](int a) { return a >= lo && a <= hi && corner[a - lo] != 0; };
+  auto in_complex = [&](int a) { return a >= lo && a <= hi && corner[a - lo] == 2; };
   std::unordered_set<std::uint64_t> edges;
   auto add_side = [&](int a, int b) {
-    const bool ca = candidate_corners.count(a) > 0, cb = candidate_corners.count(b) > 0;
-    if (ca) corners.insert(a);
-    if (cb) corners.insert(b);
+    const bool ca = candidate_corner(a), cb = candidate_corner(b);
+    if (ca) corner[a - lo] = 2;
+    if (cb) corner[b - lo] = 2;
     if (ca && cb) edges.insert(edge_key(a, b));
   };
   auto add_face = [&](int f) { for_each_side(mc, f, [&](int, int a, int b) { add_side(a, b); }); };
@@ -203,7 +228,7 @@ AxisCells attach_by_expansion(const MedialComplex& mc, AxisCells base, const std
     if (mc.start[f + 1] - mc.start[f] != 3) return false;
     int shared_corners = 0, shared_edges = 0;
     for_each_side(mc, f, [&](int, int a, int b) {
-      shared_corners += corners.count(a) > 0;
+      shared_corners += in_complex(a);
       shared_edges += edges.count(edge_key(a, b)) > 0;
     });
     return (shared_corners == 1 && shared_edges == 0) || (shared_corners == 2 && shared_edges == 1) ||
@@ -211,7 +236,7 @@ AxisCells attach_by_expansion(const MedialComplex& mc, AxisCells base, const std
   };
   // Whether a face attaches changes only when a face at one of its corners is added: faces that
   // do not attach yet wait at their corners.
-  std::unordered_map<int, std::vector<int>> waiting;
+  std::vector<std::vector<int>> waiting(span);
   std::vector<char> done(candidates.size(), 0);
   std::vector<int> queue(candidates.size());
   for (size_t i = 0; i < candidates.size(); ++i) queue[i] = static_cast<int>(i);
@@ -220,18 +245,17 @@ AxisCells attach_by_expansion(const MedialComplex& mc, AxisCells base, const std
     if (done[i]) continue;
     const int f = candidates[i];
     if (!attaches(f)) {
-      for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) waiting[mc.nodes[k]].push_back(i);
+      for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) waiting[mc.nodes[k] - lo].push_back(i);
       continue;
     }
     done[i] = 1;
     add_face(f);
     base.faces.push_back(f);
     for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
-      auto it = waiting.find(mc.nodes[k]);
-      if (it == waiting.end()) continue;
-      for (int j : it->second)
+      std::vector<int>& w = waiting[mc.nodes[k] - lo];
+      for (int j : w)
         if (!done[j]) queue.push_back(j);
-      waiting.erase(it);
+      w.clear();
     }
   }
   for (char d : done) st.unattached_faces += !d;

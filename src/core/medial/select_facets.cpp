@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 
 #include "geometry_3.h"
+#include "../two_cores.h"
 
 namespace cadmedial::internal {
 
@@ -160,43 +162,60 @@ bool Selection::passes(int p, int q) const {
   return true;
 }
 
-// 4.2.6 lines 5-8: the bounded Voronoi facets dual to selected Delaunay edges. Unbounded facets
-// belong to the outer medial axis (4.2.5) and are not kept. With `fillers`, the bounded facets of
-// the other edges are added too, marked: the Voronoi complex inside the solid has the solid's
-// homotopy type, and collapse_fillers keeps the few of them the selected axis needs for it.
-// Each edge is visited once, from the first cell (in mc's order) around it: a walk around the
-// edge marks it in the other cells. (CGAL's edge iterator walks around every edge of every cell
-// to find the edge's first cell, and then we walked again.)
-void select_facets(const Selection& sel, MedialComplex& mc, MedialAxisStats& st, const Progress& progress,
-                   bool fillers) {
-  static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-  auto edge_bit = [](int i, int j) {
-    static constexpr int kIndex[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
-    return static_cast<std::uint8_t>(1u << kIndex[i][j]);
-  };
+namespace {
+
+constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+std::uint8_t edge_bit(int i, int j) {
+  static constexpr int kIndex[4][4] = {{-1, 0, 1, 2}, {0, -1, 3, 4}, {1, 3, -1, 5}, {2, 4, 5, -1}};
+  return static_cast<std::uint8_t>(1u << kIndex[i][j]);
+}
+
+// One thread's facets, in the order of their first cells.
+struct Facets {
+  std::vector<int> first;  ///< per facet: the smallest cell id around its edge
+  std::vector<int> start{0};
+  std::vector<int> nodes;
+  std::vector<std::array<int, 2>> dual;
+  std::vector<std::uint8_t> filler;
+  std::size_t selected = 0;
+};
+
+// A cell of the other thread's, in a thread's array of walked edges (edge bits are 1 to 32).
+constexpr std::uint8_t kOthers = 0x80;
+
+// The facets of the edges whose first cell (the smallest id around the edge) is one of this
+// thread's, visited in the order of their first cells. `done` is this thread's own: the other
+// thread's cells are marked kOthers in it. A walk around an edge marks the edge in every cell on
+// the way; an edge found from one of our cells whose walk meets an earlier cell (one of the other
+// thread's) is theirs. `tick(c)` before each cell: false stops.
+template <class Tick>
+Facets facets_of(const Selection& sel, const MedialComplex& mc, std::vector<std::uint8_t>& done, bool fillers,
+                 const Tick& tick) {
   auto corner = [&](int cell, int sample) {
     const auto& v = mc.cell_samples[cell];
     return v[0] == sample ? 0 : v[1] == sample ? 1 : v[2] == sample ? 2 : 3;
   };
+  Facets out;
   const int nc = static_cast<int>(mc.num_cells());
-  std::vector<std::uint8_t> done(nc, 0);
   std::vector<int> face;
   for (int c = 0; c < nc; ++c) {
-    if (c % 65536 == 0) report(progress, "selection", static_cast<double>(c) / std::max(1, nc));
+    if (!tick(c)) break;
+    if (done[c] & kOthers) continue;
     for (const auto& [i, j] : kEdge) {
       if (done[c] & edge_bit(i, j)) continue;
       const int p = mc.cell_samples[c][i], q = mc.cell_samples[c][j];
       const bool selected = sel.selected(p, q);
       if (!selected && !fillers) continue;
-      st.selected_facets += selected;
       // Around pq in CGAL's turning sense (its cell circulator); off the hull, back the other way
       // from c to mark the rest.
       face.clear();
-      bool bounded = true;
+      bool bounded = true, first = true;
       int cur = c, ci = i, cj = j;
       do {
         face.push_back(cur);
         done[cur] |= edge_bit(ci, cj);
+        first = first && cur >= c;
         const int nb = mc.cell_neighbors[cur][Delaunay::next_around_edge(ci, cj)];
         if (nb < 0) {
           bounded = false;
@@ -209,12 +228,108 @@ void select_facets(const Selection& sel, MedialComplex& mc, MedialAxisStats& st,
         for (int nb; (nb = mc.cell_neighbors[cur][Delaunay::next_around_edge(cj, ci)]) >= 0;) {
           cur = nb, ci = corner(nb, p), cj = corner(nb, q);
           done[cur] |= edge_bit(ci, cj);
+          first = first && cur >= c;
         }
-        continue;
       }
-      if (face.size() >= 3) mc.add(face, FaceKind::Voronoi, {p, q}, !selected);
+      if (!first) continue;
+      out.selected += selected;
+      if (!bounded || face.size() < 3) continue;
+      out.first.push_back(c);
+      out.nodes.insert(out.nodes.end(), face.begin(), face.end());
+      out.start.push_back(static_cast<int>(out.nodes.size()));
+      out.dual.push_back({p, q});
+      out.filler.push_back(!selected);
     }
   }
+  return out;
+}
+
+// Both threads' facets into mc, in the order of their first cells: the order one thread would
+// have found them in.
+void add_in_order(MedialComplex& mc, const Facets& a, const Facets& b) {
+  const std::size_t n = a.first.size() + b.first.size();
+  mc.dual.reserve(mc.dual.size() + n);
+  mc.filler.reserve(mc.filler.size() + n);
+  mc.kind.reserve(mc.kind.size() + n);
+  mc.start.reserve(mc.start.size() + n);
+  mc.nodes.reserve(mc.nodes.size() + a.nodes.size() + b.nodes.size());
+  auto take = [&mc](const Facets& f, std::size_t k) {
+    mc.dual.push_back(f.dual[k]);
+    mc.filler.push_back(f.filler[k]);
+    mc.nodes.insert(mc.nodes.end(), f.nodes.begin() + f.start[k], f.nodes.begin() + f.start[k + 1]);
+    mc.start.push_back(static_cast<int>(mc.nodes.size()));
+    mc.kind.push_back(FaceKind::Voronoi);
+  };
+  std::size_t i = 0, j = 0;
+  while (i < a.first.size() || j < b.first.size()) {
+    if (j == b.first.size() || (i < a.first.size() && a.first[i] < b.first[j]))
+      take(a, i++);
+    else
+      take(b, j++);
+  }
+}
+
+}  // namespace
+
+// 4.2.6 lines 5-8: the bounded Voronoi facets dual to selected Delaunay edges. Unbounded facets
+// belong to the outer medial axis (4.2.5) and are not kept. With `fillers`, the bounded facets of
+// the other edges are added too, marked: the Voronoi complex inside the solid has the solid's
+// homotopy type, and collapse_fillers keeps the few of them the selected axis needs for it.
+// Each edge is visited once, from the first cell (in mc's order) around it: a walk around the
+// edge marks it in the other cells. (CGAL's edge iterator walks around every edge of every cell
+// to find the edge's first cell, and then we walked again.)
+// Two threads take the cells on either side of the median plane across the samples' longest
+// extent: few edges have cells on both sides, so each thread walks about half of them.
+void select_facets(const Selection& sel, MedialComplex& mc, MedialAxisStats& st, const Progress& progress,
+                   bool fillers, const std::function<void(int)>& also, int threads) {
+  const int nc = static_cast<int>(mc.num_cells());
+  const std::vector<Point3>& points = sel.samples().points;
+  int axis = 0;
+  double split = 0;
+  if (!points.empty()) {
+    const auto [lo, hi] = bounding_box(points);
+    for (int k = 1; k < 3; ++k)
+      if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+    std::vector<double> x(points.size());
+    for (std::size_t s = 0; s < points.size(); ++s) x[s] = points[s][axis];
+    std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+    split = x[x.size() / 2];
+  }
+  // Each thread's array of walked edges, with the other thread's cells marked: a cell's side is
+  // its first sample's. (One shared array, or a look at the side in every step of a walk, cost
+  // as much as the walks saved.)
+  auto walked = [&](bool upper) {
+    std::vector<std::uint8_t> done(nc);
+    for (int c = 0; c < nc; ++c) done[c] = (points[mc.cell_samples[c][0]][axis] >= split) != upper ? kOthers : 0;
+    return done;
+  };
+  auto report_every = [&](int c) {
+    if (c % 65536 == 0) report(progress, "selection", static_cast<double>(c) / std::max(1, nc));
+    return true;
+  };
+  Facets lower_facets, upper_facets;
+  if (threads < 2) {
+    if (also) {
+      also(0);
+      also(1);
+    }
+    std::vector<std::uint8_t> done(nc, 0);
+    lower_facets = facets_of(sel, mc, done, fillers, report_every);
+  } else {
+    on_two_cores(
+        [&] {
+          if (also) also(0);
+          std::vector<std::uint8_t> done = walked(false);
+          lower_facets = facets_of(sel, mc, done, fillers, report_every);
+        },
+        [&](const std::atomic<bool>& stop) {
+          if (also) also(1);
+          std::vector<std::uint8_t> done = walked(true);
+          upper_facets = facets_of(sel, mc, done, fillers, [&](int c) { return c % 16384 != 0 || !stop; });
+        });
+  }
+  st.selected_facets += lower_facets.selected + upper_facets.selected;
+  add_in_order(mc, lower_facets, upper_facets);
 }
 
 }  // namespace cadmedial::internal

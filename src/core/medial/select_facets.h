@@ -2,6 +2,7 @@
 // select (4.2.6 lines 5-8); MEDIAL's pole umbrellas for the ablation.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "../progress.h"
@@ -20,6 +21,7 @@ class Selection {
   bool passes(int p, int q) const;
   /// 4.2.6 line 6: either endpoint may pass.
   bool selected(int p, int q) const { return passes(p, q) || passes(q, p); }
+  const Samples& samples() const { return s_; }
 
  private:
   const Samples& s_;
@@ -37,8 +39,11 @@ Umbrellas umbrellas_from_poles(const Delaunay& dt, std::size_t n);
 
 /// The bounded Voronoi facets dual to selected Delaunay edges, added to mc; with `fillers`, those
 /// of the other edges too, marked as fillers.
-/// Needs mc's cells numbered (number_cells).
+/// Needs mc's cells numbered (number_cells). Runs on two threads unless `threads` is 1 (the same
+/// faces in the same order); only the calling one reports progress. `also(0)` runs on this thread
+/// and `also(1)` on the other before they select (each half of the circumcentres, say): it must
+/// not touch what the selection reads (mc's cell samples and neighbours).
 void select_facets(const Selection& sel, MedialComplex& mc, MedialAxisStats& st, const Progress& progress,
-                   bool fillers);
+                   bool fillers, const std::function<void(int part)>& also = {}, int threads = 2);
 
 }  // namespace cadmedial::internal

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "../two_cores.h"
 #include "point_grid.h"
 
 namespace cadmedial {
@@ -45,34 +46,46 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
   auto facing = [&](const Point3& n, int j) {
     return dot3(n, s.normal[j]) <= -0.5 || (on_edge(s, j) && dot3(n, s.normal2[j]) <= -0.5);
   };
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (i % 4096 == 0) report(progress, "thin walls", static_cast<double>(i) / s.size());
-    if (!on_wall(s, i)) continue;
-    const Point3& p = s.points[i];
-    const bool by_edge = convex.any_near(p, spacing, [&](int j) { return distance2(s.points[j], p) < spacing2; });
-    double radius = std::numeric_limits<double>::infinity();
-    for (const Point3* n : {&s.normal[i], on_edge(s, i) ? &s.normal2[i] : nullptr}) {
-      if (!n) continue;
-      grid.any_near(p, reach, [&](int j) {
-        if (!facing(*n, j)) return false;
-        if (by_edge && s.face[i] >= 0 && s.face[j] >= 0 && s.face[j] != s.face[i] && dot3(*n, s.normal[j]) < wedge_dot &&
-            std::binary_search(wedge.begin(), wedge.end(), pair_key(s.face[i], s.face[j])))
+  // Each sample on its own: half of them on each of two cores, only this one reporting.
+  auto measure = [&](std::size_t begin, std::size_t end, const auto& tick) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (i % 4096 == 0 && !tick(i)) return;
+      if (!on_wall(s, i)) continue;
+      const Point3& p = s.points[i];
+      const bool by_edge = convex.any_near(p, spacing, [&](int j) { return distance2(s.points[j], p) < spacing2; });
+      double radius = std::numeric_limits<double>::infinity();
+      for (const Point3* n : {&s.normal[i], on_edge(s, i) ? &s.normal2[i] : nullptr}) {
+        if (!n) continue;
+        grid.any_near(p, reach, [&](int j) {
+          if (!facing(*n, j)) return false;
+          if (by_edge && s.face[i] >= 0 && s.face[j] >= 0 && s.face[j] != s.face[i] && dot3(*n, s.normal[j]) < wedge_dot &&
+              std::binary_search(wedge.begin(), wedge.end(), pair_key(s.face[i], s.face[j])))
+            return false;
+          const Point3 d{s.points[j][0] - p[0], s.points[j][1] - p[1], s.points[j][2] - p[2]};
+          const double d2 = dot3(d, d);
+          const double depth = -dot3(d, *n);  // how far q lies inside p's tangent plane
+          if (!(depth > 0 && d2 < reach2)) return false;
+          radius = std::min(radius, d2 / (2.0 * depth));
+          // Parallel walls: half their distance, with q up to 5 depths along the other wall (the
+          // ball through q overestimates by (lateral offset)^2 / (2 depth) when q is not opposite
+          // p; farther along, q may be on a wall that only meets p's plane, as where a solid's
+          // faces touch at a corner).
+          if (dot3(*n, s.normal[j]) < -0.95 && depth * depth >= 0.04 * (d2 - depth * depth)) radius = std::min(radius, 0.5 * depth);
           return false;
-        const Point3 d{s.points[j][0] - p[0], s.points[j][1] - p[1], s.points[j][2] - p[2]};
-        const double d2 = dot3(d, d);
-        const double depth = -dot3(d, *n);  // how far q lies inside p's tangent plane
-        if (!(depth > 0 && d2 < reach2)) return false;
-        radius = std::min(radius, d2 / (2.0 * depth));
-        // Parallel walls: half their distance, with q up to 5 depths along the other wall (the
-        // ball through q overestimates by (lateral offset)^2 / (2 depth) when q is not opposite
-        // p; farther along, q may be on a wall that only meets p's plane, as where a solid's
-        // faces touch at a corner).
-        if (dot3(*n, s.normal[j]) < -0.95 && depth * depth >= 0.04 * (d2 - depth * depth)) radius = std::min(radius, 0.5 * depth);
-        return false;
-      });
+        });
+      }
+      if (radius < spacing) radii[i] = radius;
     }
-    if (radius < spacing) radii[i] = radius;
-  }
+  };
+  const std::size_t mid = s.size() / 2;
+  internal::on_two_cores(
+      [&] {
+        measure(0, mid, [&](std::size_t i) {
+          report(progress, "thin walls", static_cast<double>(i) / std::max<std::size_t>(1, mid));
+          return true;
+        });
+      },
+      [&](const std::atomic<bool>& stop) { measure(mid, s.size(), [&](std::size_t) { return !stop; }); });
   return radii;
 }
 
