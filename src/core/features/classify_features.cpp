@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepTools.hxx>
@@ -274,6 +275,8 @@ Features classify_features(const TopoDS_Solid& solid, double smooth_angle_deg) {
   f.sharp_vertex.assign(nv, false);
   TopTools_IndexedDataMapOfShapeListOfShape vertex_edges;
   TopExp::MapShapesAndUniqueAncestors(solid, TopAbs_VERTEX, TopAbs_EDGE, vertex_edges);
+  // Each sharp edge is asked at both its vertices: its curve, pcurves and adaptors once.
+  std::vector<std::unique_ptr<EdgeGeometry>> geometry(f.edge_kind.size());
   for (int v = 0; v < nv; ++v) {
     const TopoDS_Vertex& vertex = TopoDS::Vertex(f.vertices(v + 1));
     if (!vertex_edges.Contains(vertex)) continue;
@@ -291,7 +294,8 @@ Features classify_features(const TopoDS_Solid& solid, double smooth_angle_deg) {
       // The character of the edge at this vertex, not on average.
       const double t = BRep_Tool::Parameter(vertex, edge);
       try {
-        if (edge_point(f, e, t).kind == PointKind::Convex) convex = true;
+        if (!geometry[e]) geometry[e] = std::make_unique<EdgeGeometry>(f, e);
+        if (geometry[e]->at(t).kind == PointKind::Convex) convex = true;
       } catch (const GeometryError&) {
         if (kind == EdgeKind::Convex) convex = true;  // normal undefined at the end: the edge says
       }
