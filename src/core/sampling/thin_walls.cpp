@@ -35,8 +35,9 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
   std::vector<double> radii(s.size(), std::numeric_limits<double>::infinity());
   const double reach = 2.0 * spacing;
   PointGrid grid(reach), convex(spacing);
+  std::vector<int> walls;  // the samples measured, in order
   for (std::size_t i = 0; i < s.size(); ++i) {
-    if (on_wall(s, i)) grid.insert(s.points[i], static_cast<int>(i));
+    if (on_wall(s, i)) grid.insert(s.points[i], static_cast<int>(i)), walls.push_back(static_cast<int>(i));
     if (s.edge_convex[i] == 1) convex.insert(s.points[i], static_cast<int>(i));
   }
   std::vector<std::int64_t> wedge;  // both orders, sorted
@@ -46,11 +47,12 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
   auto facing = [&](const Point3& n, int j) {
     return dot3(n, s.normal[j]) <= -0.5 || (on_edge(s, j) && dot3(n, s.normal2[j]) <= -0.5);
   };
-  // Each sample on its own: half of them on each of two cores, only this one reporting.
+  // Each sample on its own: half of the walls' samples on each of two cores (the edge samples
+  // come first and are mostly not walls), only this one reporting.
   auto measure = [&](std::size_t begin, std::size_t end, const auto& tick) {
-    for (std::size_t i = begin; i < end; ++i) {
-      if (i % 4096 == 0 && !tick(i)) return;
-      if (!on_wall(s, i)) continue;
+    for (std::size_t w = begin; w < end; ++w) {
+      if (w % 4096 == 0 && !tick(w)) return;
+      const std::size_t i = static_cast<std::size_t>(walls[w]);
       const Point3& p = s.points[i];
       const bool by_edge = convex.any_near(p, spacing, [&](int j) { return distance2(s.points[j], p) < spacing2; });
       double radius = std::numeric_limits<double>::infinity();
@@ -77,15 +79,15 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
       if (radius < spacing) radii[i] = radius;
     }
   };
-  const std::size_t mid = s.size() / 2;
+  const std::size_t mid = walls.size() / 2;
   internal::on_two_cores(
       [&] {
-        measure(0, mid, [&](std::size_t i) {
-          report(progress, "thin walls", static_cast<double>(i) / std::max<std::size_t>(1, mid));
+        measure(0, mid, [&](std::size_t w) {
+          report(progress, "thin walls", static_cast<double>(w) / std::max<std::size_t>(1, mid));
           return true;
         });
       },
-      [&](const std::atomic<bool>& stop) { measure(mid, s.size(), [&](std::size_t) { return !stop; }); });
+      [&](const std::atomic<bool>& stop) { measure(mid, walls.size(), [&](std::size_t) { return !stop; }); });
   return radii;
 }
 
