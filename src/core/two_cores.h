@@ -2,6 +2,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <future>
 
 namespace cadmedial::internal {
@@ -22,6 +23,20 @@ void on_two_cores(First&& first, Second&& second) {
     throw;
   }
   other.get();
+}
+
+/// fn(part, begin, end) for the two halves of [0, n): part 0, [0, n/2), on this thread and part
+/// 1, [n/2, n), on a second one (through on_two_cores: no progress from `fn`). Below `min_split`
+/// items a thread costs more than it saves: both parts run here, in turn.
+template <class Fn>
+void on_two_halves(std::size_t n, const Fn& fn, std::size_t min_split = 0) {
+  const std::size_t mid = n / 2;
+  if (n < min_split) {
+    fn(0, std::size_t{0}, mid);
+    fn(1, mid, n);
+    return;
+  }
+  on_two_cores([&] { fn(0, std::size_t{0}, mid); }, [&](const std::atomic<bool>&) { fn(1, mid, n); });
 }
 
 }  // namespace cadmedial::internal

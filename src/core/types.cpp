@@ -45,11 +45,14 @@ void MedialMesh::append(const MedialMesh& other) {
 
 namespace {
 
+// Fewer items than this are sorted or rewritten on one thread: a thread costs more.
+constexpr std::size_t kMinSplit = 8192;
+
 // Sorts v by `less` on two cores when it is long: each half, then one merge. `less` must be a
 // strict weak order; elements it finds equal may end up in another order than std::sort's.
 template <class T, class Less>
 void sort_on_two_cores(std::vector<T>& v, const Less& less) {
-  if (v.size() < 8192) {
+  if (v.size() < kMinSplit) {
     std::sort(v.begin(), v.end(), less);
     return;
   }
@@ -59,16 +62,6 @@ void sort_on_two_cores(std::vector<T>& v, const Less& less) {
   std::vector<T> out(v.size());
   std::merge(v.begin(), mid, mid, v.end(), out.begin(), less);
   v.swap(out);
-}
-
-// Calls fn(begin, end) on [0, n/2) here and [n/2, n) on a second thread when n is large.
-template <class Fn>
-void halves_on_two_cores(std::size_t n, const Fn& fn) {
-  if (n < 8192) {
-    fn(std::size_t{0}, n);
-    return;
-  }
-  internal::on_two_cores([&] { fn(std::size_t{0}, n / 2); }, [&](const std::atomic<bool>&) { fn(n / 2, n); });
 }
 
 }  // namespace
@@ -110,7 +103,7 @@ void MedialMesh::sort_canonically() {
   // Renumber and rotate each polygon in place, then sort face indices by (solid, corners, kind)
   // over the flat arrays: no per-polygon allocation (half a million faces at 250k samples).
   const std::size_t nf = num_faces();
-  halves_on_two_cores(nf, [&](std::size_t begin, std::size_t end) {
+  internal::on_two_halves(nf, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t f = begin; f < end; ++f) {
       int* b = face_vertices.data() + face_start[f];
       int* e = face_vertices.data() + face_start[f + 1];
@@ -120,7 +113,7 @@ void MedialMesh::sort_canonically() {
       // the smaller neighbour.
       if (e - b > 2 && *(e - 1) < b[1]) std::reverse(b + 1, e);
     }
-  });
+  }, kMinSplit);
   // The solid and first three corners beside the index decide most comparisons; equal ones look
   // at the whole polygons (equal faces are equal in the file, in whichever order).
   struct FaceKey {
@@ -149,14 +142,14 @@ void MedialMesh::sort_canonically() {
   std::vector<int> sorted_vertices(face_vertices.size());
   std::vector<FaceKind> sorted_kind(nf);
   std::vector<int> sorted_solid(nf);
-  halves_on_two_cores(nf, [&](std::size_t begin, std::size_t end) {
+  internal::on_two_halves(nf, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       const int f = fkeys[i].index;
       std::copy(face(f), face(f) + face_size(f), sorted_vertices.begin() + sorted_start[i]);
       sorted_kind[i] = kind[f];
       sorted_solid[i] = solid[f];
     }
-  });
+  }, kMinSplit);
   face_start.swap(sorted_start);
   face_vertices.swap(sorted_vertices);
   kind.swap(sorted_kind);

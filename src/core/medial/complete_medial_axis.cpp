@@ -113,18 +113,19 @@ void star_cells(MedialComplex& mc, std::size_t samples) {
         if (slot[s] >= 0) fn(slot[s], static_cast<int>(c));
   };
   std::vector<int> lower_count(ns, 0), upper_count(ns, 0);
-  on_two_cores([&] { for_each_incidence(0, nc / 2, [&](int i, int) { ++lower_count[i]; }); },
-               [&](const std::atomic<bool>&) { for_each_incidence(nc / 2, nc, [&](int i, int) { ++upper_count[i]; }); });
+  on_two_halves(nc, [&](int part, std::size_t begin, std::size_t end) {
+    std::vector<int>& count = part ? upper_count : lower_count;
+    for_each_incidence(begin, end, [&](int i, int) { ++count[i]; });
+  });
   mc.star_start.assign(ns + 1, 0);
   for (std::size_t i = 0; i < ns; ++i) mc.star_start[i + 1] = mc.star_start[i] + lower_count[i] + upper_count[i];
   mc.star_cells.resize(mc.star_start[ns]);
   // Each half's cells after the star's start, the upper half's after the lower's.
   for (std::size_t i = 0; i < ns; ++i) upper_count[i] = mc.star_start[i] + lower_count[i], lower_count[i] = mc.star_start[i];
-  on_two_cores(
-      [&] { for_each_incidence(0, nc / 2, [&](int i, int c) { mc.star_cells[lower_count[i]++] = c; }); },
-      [&](const std::atomic<bool>&) {
-        for_each_incidence(nc / 2, nc, [&](int i, int c) { mc.star_cells[upper_count[i]++] = c; });
-      });
+  on_two_halves(nc, [&](int part, std::size_t begin, std::size_t end) {
+    std::vector<int>& next = part ? upper_count : lower_count;
+    for_each_incidence(begin, end, [&](int i, int c) { mc.star_cells[next[i]++] = c; });
+  });
 }
 
 }  // namespace cadmedial::internal

@@ -543,8 +543,9 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
     }
   };
   std::vector<int> inner, inner_upper;
-  on_two_cores([&] { inner_faces(0, mc.size() / 2, inner); },
-               [&](const std::atomic<bool>&) { inner_faces(mc.size() / 2, mc.size(), inner_upper); });
+  on_two_halves(mc.size(), [&](int part, std::size_t begin, std::size_t end) {
+    inner_faces(begin, end, part ? inner_upper : inner);
+  });
   inner.insert(inner.end(), inner_upper.begin(), inner_upper.end());
   // The Voronoi part first, its topology repaired; then the completion triangles that keep it,
   // the paper's before the fans that close their rims. The fans on the second core meanwhile

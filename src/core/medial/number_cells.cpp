@@ -44,8 +44,7 @@ void number_cells(const Delaunay& dt, const std::vector<int>& rank, MedialComple
       ++count[k];
     }
   };
-  on_two_cores([&] { count_keys(0, nc / 2, lower); },
-               [&](const std::atomic<bool>&) { count_keys(nc / 2, nc, upper); });
+  on_two_halves(nc, [&](int part, std::size_t begin, std::size_t end) { count_keys(begin, end, part ? upper : lower); });
   // Where each half's next cell of a key goes.
   for (std::size_t k = 0, at = 0; k < n; ++k) {
     const int here = lower[k], there = upper[k];
@@ -62,14 +61,13 @@ void number_cells(const Delaunay& dt, const std::vector<int>& rank, MedialComple
       c->info().id = id;
     }
   };
-  on_two_cores([&] { number(0, nc / 2, lower); }, [&](const std::atomic<bool>&) { number(nc / 2, nc, upper); });
+  on_two_halves(nc, [&](int part, std::size_t begin, std::size_t end) { number(begin, end, part ? upper : lower); });
   mc.cell_samples.resize(nc);
   mc.cell_neighbors.resize(nc);
   mc.centers.resize(nc);
   mc.radii.resize(nc);
   // Half the cells each on two cores: the reads wander over CGAL's cells.
-  on_two_cores([&] { fill_cells(cells, mc, 0, nc / 2); },
-               [&](const std::atomic<bool>&) { fill_cells(cells, mc, nc / 2, nc); });
+  on_two_halves(nc, [&](int, std::size_t begin, std::size_t end) { fill_cells(cells, mc, begin, end); });
 }
 
 void cell_centers(const std::vector<Point3>& points, MedialComplex& mc, std::size_t begin, std::size_t end) {
