@@ -297,7 +297,8 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
             const auto start = Clock::now();
             Umbrellas u = reconstruct_faces(s.samples, worker);
             reconstruction_seconds = seconds_since(start);
-            thin = s.thin ? *s.thin : thinnest_wall(s.samples, spacing, wedges, worker);
+            // One thread: the triangulation has the other core.
+            thin = s.thin ? *s.thin : thinnest_wall(s.samples, spacing, wedges, worker, 1);
             return u;
           }).share();
       const struct Abandon {

@@ -25,7 +25,7 @@ bool on_wall(const Samples& s, std::size_t i) { return on_face(s, i) || (on_edge
 }  // namespace
 
 std::vector<double> wall_radii(const Samples& s, double spacing, const std::vector<std::array<int, 2>>& wedges,
-                               double wedge_dot, const Progress& progress) {
+                               double wedge_dot, const Progress& progress, int threads) {
   // The ball tangent at p (outward normal n) through q has radius |q - p|^2 / (2 (p - q).n): the
   // shrinking-ball estimate of the medial radius at p. Only a facing wall counts: across a convex
   // or concave edge the ball shrinks too, but there the axis meets the edge by construction. A
@@ -79,6 +79,13 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
       if (radius < spacing) radii[i] = radius;
     }
   };
+  if (threads < 2) {
+    measure(0, walls.size(), [&](std::size_t w) {
+      report(progress, "thin walls", static_cast<double>(w) / std::max<std::size_t>(1, walls.size()));
+      return true;
+    });
+    return radii;
+  }
   const std::size_t mid = walls.size() / 2;
   internal::on_two_cores(
       [&] {

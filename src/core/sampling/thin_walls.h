@@ -23,9 +23,10 @@ namespace cadmedial {
 /// pairs) do not count as walls for each other where their normals' dot product is below
 /// `wedge_dot` (1: anywhere): a sharp wedge thins to nothing at its edge, where the completion
 /// (4.2.2) joins the axis to the edge. (The faces of a thin plate's rim edges are not such a
-/// pair: top and bottom face each other up to the rim.) Progress is reported (and so can cancel) every few thousand samples.
+/// pair: top and bottom face each other up to the rim.) Progress is reported (and so can cancel)
+/// every few thousand samples. On two threads unless `threads` is 1 (the same radii).
 std::vector<double> wall_radii(const Samples& samples, double spacing, const std::vector<std::array<int, 2>>& wedges,
-                               double wedge_dot = 1.0, const Progress& progress = {});
+                               double wedge_dot = 1.0, const Progress& progress = {}, int threads = 2);
 
 struct ThinWall {
   double radius = std::numeric_limits<double>::infinity();  ///< the smallest of wall_radii
@@ -35,8 +36,8 @@ struct ThinWall {
 
 ThinWall thinnest_wall(const Samples& samples, const std::vector<double>& radii);
 inline ThinWall thinnest_wall(const Samples& samples, double spacing, const std::vector<std::array<int, 2>>& wedges,
-                              const Progress& progress = {}) {
-  return thinnest_wall(samples, wall_radii(samples, spacing, wedges, 1.0, progress));
+                              const Progress& progress = {}, int threads = 2) {
+  return thinnest_wall(samples, wall_radii(samples, spacing, wedges, 1.0, progress, threads));
 }
 
 }  // namespace cadmedial
