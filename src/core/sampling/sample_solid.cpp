@@ -3,7 +3,10 @@
 #include "sample_solid.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <future>
 #include <memory>
 #include <optional>
 #include <random>
@@ -67,6 +70,11 @@ class Sampler {
       : solid_(solid), f_(f), sp_(sample_spacing(field.uniform())), field_(field), progress_(progress),
         grid_(field.uniform()) {
     out_.spacing = field.uniform();
+    const int nf = f.faces.Extent();
+    surfaces_.resize(nf);
+    classifiers_.resize(nf);
+    plans_.resize(nf);
+    lattices_.resize(nf);
   }
 
   Samples run() {
@@ -365,20 +373,85 @@ class Sampler {
   }
 
   // Face interiors: a jittered grid in the parameter plane, fine enough in space, thinned to the
-  // local spacing in space (not in parameters), which shrinks where the surface curves.
+  // local spacing in space (not in parameters), which shrinks where the surface curves. Each face
+  // on its own (its own random stream, kept clear of the corner, edge and triplet samples and of
+  // its own samples), so that the faces can be sampled on two threads and the result does not
+  // depend on which thread took which face. Samples of two faces never crowd each other: away
+  // from their common edge's samples, they are farther apart than the spacing anyway, unless
+  // the faces meet at less than 60 degrees, where their normals already keep them apart.
   void sample_faces() {
     const int nf = f_.faces.Extent();
     out_.faces.resize(nf);
-    std::mt19937_64 rng(12345);
-    std::uniform_real_distribution<double> jitter(-0.35, 0.35);
+    std::vector<FaceInterior> interiors(nf);
+    std::atomic<int> next{0}, done{0};
+    std::atomic<bool> stop{false};
+    // Largest faces first, so that the two threads end together.
+    std::vector<int> order(nf);
+    std::vector<double> cost(nf);
     for (int fi = 0; fi < nf; ++fi) {
+      order[fi] = fi;
+      const FacePlan& plan = face_plan(fi);
+      cost[fi] = static_cast<double>(plan.lattice.nu) * static_cast<double>(plan.lattice.nv);
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
+    const auto work = [&](bool reports) {
+      // Only this thread reports (the callback may hold Python's lock); the other polls `stop`.
+      const std::function<void(double)> row =
+          reports ? std::function<void(double)>([&](double f) { report_faces(done + f, nf); })
+                  : std::function<void(double)>([&](double) {
+                      if (stop) throw Cancelled();
+                    });
       try {
-        sample_face(fi, rng, jitter);
-      } catch (const Standard_Failure& err) {
-        throw GeometryError("face " + std::to_string(fi + 1) + ": cannot sample: " + err.GetMessageString());
+        for (int k; !stop && (k = next++) < nf;) {
+          const int fi = order[k];
+          try {
+            interiors[fi] = sample_face(fi, row);
+          } catch (const Standard_Failure& err) {
+            throw GeometryError("face " + std::to_string(fi + 1) + ": cannot sample: " + err.GetMessageString());
+          }
+          ++done;
+        }
+      } catch (...) {
+        stop = true;
+        throw;
       }
+    };
+    if (nf < 2) {
+      work(true);
+    } else {
+      std::future<void> other = std::async(std::launch::async, [&] { work(false); });
+      try {
+        work(true);
+        // The user can still cancel while the other thread finishes its last face.
+        while (other.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) report_faces(done, nf);
+      } catch (...) {
+        stop = true;
+        other.wait();
+        throw;
+      }
+      other.get();
+    }
+    for (int fi = 0; fi < nf; ++fi) {
+      const FaceInterior& in = interiors[fi];
+      for (size_t k = 0; k < in.point.size(); ++k) {
+        const int id = add(in.point[k], SampleTag::Face);
+        out_.face[id] = fi;
+        out_.normal[id] = in.normal[k];
+        out_.curvature[id] = in.curvature[k];
+        face_points_[fi].push_back({id, in.uv[k]});
+      }
+      build_domain(fi);
     }
   }
+
+  void report_faces(double faces_done, int nf) { report(progress_, "sampling", 0.2 + 0.8 * faces_done / std::max(1, nf)); }
+
+  // One face's interior samples, before they get their sample ids.
+  struct FaceInterior {
+    std::vector<Point3> point, normal;
+    std::vector<float> curvature;
+    std::vector<std::array<double, 2>> uv;
+  };
 
   // A face's mean metric and its lattice of candidates over its parameter bounds: cells of about
   // half the smallest local spacing in space (metric and curvature probed on a 13 x 13 grid).
@@ -390,8 +463,7 @@ class Sampler {
   };
 
   const FacePlan& face_plan(int fi) {
-    auto found = plans_.find(fi);
-    if (found != plans_.end()) return found->second;
+    if (plans_[fi]) return *plans_[fi];
     FacePlan plan;
     const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
     const BRepAdaptor_Surface& surf = surface(fi);
@@ -435,7 +507,7 @@ class Sampler {
     plan.planar = planar;
     plan.spacing = r_min;
     plan.lattice = {u0, v0, (u1 - u0) / nu, (v1 - v0) / nvv, nu, nvv};
-    return plans_.emplace(fi, plan).first->second;
+    return *(plans_[fi] = plan);
   }
 
   // The face's point-in-face answers over its lattice (kept from the triplets to the face's own
@@ -453,10 +525,11 @@ class Sampler {
     return classifier(fi).Perform(uv) == TopAbs_IN;
   }
 
-  // A candidate on face fi: kept unless a sample placed before lies within the local spacing
-  // (the field's `h`, smaller where the surface curves) or the face's classifier says outside.
+  // A candidate on face fi: kept unless a corner, edge or triplet sample or one of the face's
+  // own lies within the local spacing (the field's `h`, smaller where the surface curves) or
+  // the face's classifier says outside.
   void try_face_candidate(int fi, double u, double v, LatticeClassifier::Answer where, double h,
-                          BRepLProp_SLProps& props) {
+                          BRepLProp_SLProps& props, FaceInterior& in, PointGrid& own) {
     const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
     const BRepAdaptor_Surface& surf = surface(fi);
     gp_Pnt p;
@@ -476,23 +549,32 @@ class Sampler {
     n.Normalize();
     if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
     const Point3 nc = to_point(n);
-    // The cheap test first: most candidates fall within reach of a sample already placed. A
-    // sample on a wall facing this one (a thin plate's other side) is no neighbour: each wall
-    // needs its own samples for the sheet between them.
+    // The cheap tests first: most candidates fall within reach of a sample already placed. A
+    // sample on a wall facing this one (a thin plate's other side, or across a narrow face) is
+    // no neighbour: each wall needs its own samples for the sheet between them.
+    if (own.any_near(c, r, [&](int id) { return distance2(in.point[id], c) < r * r && !opposite(in.normal[id], nc); }))
+      return;
     const bool crowded = grid_.any_near(c, std::max(r, sp_.edge), [&](int id) {
       const double ex = std::max(r, exclusion_[id]);
       return distance2(out_.points[id], c) < ex * ex && !opposite(out_.normal[id], nc);
     });
     if (crowded) return;
     if (where == LatticeClassifier::Answer::Ask && classifier(fi).Perform(gp_Pnt2d(u, v)) != TopAbs_IN) return;
-    const int id = add(c, SampleTag::Face);
-    out_.face[id] = fi;
-    out_.normal[id] = to_point(n);
-    out_.curvature[id] = static_cast<float>(k);
-    face_points_[fi].push_back({id, {u, v}});
+    own.insert(c, static_cast<int>(in.point.size()));
+    in.point.push_back(c);
+    in.normal.push_back(nc);
+    in.curvature.push_back(static_cast<float>(k));
+    in.uv.push_back({u, v});
   }
 
-  void sample_face(int fi, std::mt19937_64& rng, std::uniform_real_distribution<double>& jitter) {
+  // `row(f)` is called before each lattice row, f the fraction of the face done: one face can
+  // take seconds (bench/cancel_latency.py), and a cancel must not wait.
+  FaceInterior sample_face(int fi, const std::function<void(double)>& row) {
+    FaceInterior in;
+    PointGrid own(field_.uniform());
+    // The face's own random stream: its samples do not depend on the order faces are sampled in.
+    std::mt19937_64 rng(12345 + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(fi));
+    std::uniform_real_distribution<double> jitter(-0.35, 0.35);
     const BRepAdaptor_Surface& surf = surface(fi);
     const FacePlan& plan = face_plan(fi);
     FaceDomain& dom = out_.faces[fi];
@@ -502,24 +584,22 @@ class Sampler {
     const double u0 = plan.lattice.u0, v0 = plan.lattice.v0, du = plan.lattice.du, dv = plan.lattice.dv;
     LatticeClassifier& inside = lattice(fi);
     BRepLProp_SLProps props(surf, 2, 1e-9);
-    const int nf = f_.faces.Extent();
     // Where walls are thin, a lattice cell coarser than the local spacing is cut into m x m.
     const bool refine = field_.on_face(fi) < sp_.face;
     for (long i = 0; i < nu; ++i) {
-      // Per row: one face can take seconds (bench/cancel_latency.py), and a cancel must not wait.
-      report(progress_, "sampling", 0.2 + 0.8 * (fi + static_cast<double>(i) / nu) / std::max(1, nf));
+      row(static_cast<double>(i) / nu);
       for (long j = 0; j < nvv; ++j) {
         const double u = u0 + du * (i + 0.5 + jitter(rng)), v = v0 + dv * (j + 0.5 + jitter(rng));
         const LatticeClassifier::Answer where = inside.classify(i, j, gp_Pnt2d(u, v));
         if (where == LatticeClassifier::Answer::Out) continue;
         if (!refine) {
-          try_face_candidate(fi, u, v, where, sp_.face, props);
+          try_face_candidate(fi, u, v, where, sp_.face, props, in, own);
           continue;
         }
         const double h = field_.at(to_point(surf.Value(u, v)));
         const int m = std::min(8, static_cast<int>(std::ceil(plan.spacing / h - 1e-9)));
         if (m <= 1) {
-          try_face_candidate(fi, u, v, where, h, props);
+          try_face_candidate(fi, u, v, where, h, props, in, own);
           continue;
         }
         for (int a = 0; a < m; ++a)
@@ -527,12 +607,12 @@ class Sampler {
             const double us = u0 + du * (i + (a + 0.5 + jitter(rng)) / m);
             const double vs = v0 + dv * (j + (b + 0.5 + jitter(rng)) / m);
             const LatticeClassifier::Answer there = inside.classify(i, j, gp_Pnt2d(us, vs));
-            if (there != LatticeClassifier::Answer::Out) try_face_candidate(fi, us, vs, there, h, props);
+            if (there != LatticeClassifier::Answer::Out) try_face_candidate(fi, us, vs, there, h, props, in, own);
           }
       }
     }
-    lattices_.erase(fi);
-    build_domain(fi);
+    lattices_[fi].reset();
+    return in;
   }
 
   // The face's points in its parameter plane: boundary chains (seams twice, degenerate edges as
@@ -601,10 +681,12 @@ class Sampler {
   std::vector<std::vector<ChainPoint>> chains_;
   std::vector<EdgePoint> edge_points_;
   std::unordered_map<int, std::vector<std::pair<int, std::array<double, 2>>>> face_points_;
-  std::unordered_map<int, std::unique_ptr<BRepAdaptor_Surface>> surfaces_;
-  std::unordered_map<int, std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
-  std::unordered_map<int, FacePlan> plans_;
-  std::unordered_map<int, std::unique_ptr<LatticeClassifier>> lattices_;
+  // Per face, made on first use; during the face interiors only the thread sampling a face
+  // touches its entries.
+  std::vector<std::unique_ptr<BRepAdaptor_Surface>> surfaces_;
+  std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
+  std::vector<std::optional<FacePlan>> plans_;
+  std::vector<std::unique_ptr<LatticeClassifier>> lattices_;
 };
 
 }  // namespace
