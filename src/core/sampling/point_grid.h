@@ -58,6 +58,20 @@ class PointGrid {
     return false;
   }
 
+  /// Calls visit(id) for every inserted point in the cells that meet the box [lo, hi], cells in
+  /// x, y, z order, a cell's ids in insertion order. Stops and returns true as soon as visit
+  /// returns true.
+  template <class Visit>
+  bool any_in_box(const Point3& lo, const Point3& hi, const Visit& visit) const {
+    const int64_t x0 = cell_of(lo[0]), y0 = cell_of(lo[1]), z0 = cell_of(lo[2]);
+    const int64_t x1 = cell_of(hi[0]), y1 = cell_of(hi[1]), z1 = cell_of(hi[2]);
+    for (int64_t x = x0; x <= x1; ++x)
+      for (int64_t y = y0; y <= y1; ++y)
+        for (int64_t z = z0; z <= z1; ++z)
+          if (visit_cell(key(x, y, z), visit)) return true;
+    return false;
+  }
+
  private:
   static constexpr int64_t kEmpty = -1;  // keys are non-negative (63 bits)
   static constexpr size_t kInitialSlots = 1024;

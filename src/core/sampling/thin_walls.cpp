@@ -1,6 +1,7 @@
 #include "thin_walls.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -34,7 +35,11 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
   // concave edge sample has both faces' normals).
   std::vector<double> radii(s.size(), std::numeric_limits<double>::infinity());
   const double reach = 2.0 * spacing;
-  PointGrid grid(reach), convex(spacing);
+  // A ball through q tangent at p lies on p's inner side: only the cells that meet the half of
+  // the reach's box behind p's tangent plane are searched. Cells of 2/3 of the reach: on NIST CTC 01
+  // this took 0.23 s against 0.39 s with cells of the whole reach around p (one thread, same
+  // radii); on the Y-rod mount, with fewer samples near walls, the same (0.09 s).
+  PointGrid grid(reach * 2.0 / 3.0), convex(spacing);
   std::vector<int> walls;  // the samples measured, in order
   for (std::size_t i = 0; i < s.size(); ++i) {
     if (on_wall(s, i)) grid.insert(s.points[i], static_cast<int>(i)), walls.push_back(static_cast<int>(i));
@@ -58,7 +63,15 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
       double radius = std::numeric_limits<double>::infinity();
       for (const Point3* n : {&s.normal[i], on_edge(s, i) ? &s.normal2[i] : nullptr}) {
         if (!n) continue;
-        grid.any_near(p, reach, [&](int j) {
+        Point3 lo, hi;
+        for (int a = 0; a < 3; ++a) {
+          // The extent along axis a of {x : |x| <= reach, x.n <= 0}: the full reach on the side
+          // where the axis points into the solid, the disc's reach sqrt(1 - n_a^2) on the other.
+          const double slant = reach * std::min(1.0, std::sqrt(std::max(0.0, 1.0 - (*n)[a] * (*n)[a])) + 1e-9);
+          lo[a] = p[a] - ((*n)[a] < 0 ? slant : reach);
+          hi[a] = p[a] + ((*n)[a] > 0 ? slant : reach);
+        }
+        grid.any_in_box(lo, hi, [&](int j) {
           if (!facing(*n, j)) return false;
           if (by_edge && s.face[i] >= 0 && s.face[j] >= 0 && s.face[j] != s.face[i] && dot3(*n, s.normal[j]) < wedge_dot &&
               std::binary_search(wedge.begin(), wedge.end(), pair_key(s.face[i], s.face[j])))
