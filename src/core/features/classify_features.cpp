@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include <BRepAdaptor_Surface.hxx>
@@ -47,6 +48,18 @@ TopAbs_Orientation orientation_in_face(const TopoDS_Edge& edge, const TopoDS_Fac
   return TopAbs_FORWARD;
 }
 
+// BRepTools::UVBounds, NaN where it fails.
+std::array<double, 4> uv_bounds(const TopoDS_Face& face) {
+  try {
+    std::array<double, 4> b{};
+    BRepTools::UVBounds(face, b[0], b[1], b[2], b[3]);
+    return b;
+  } catch (const Standard_Failure&) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, nan, nan, nan};
+  }
+}
+
 }  // namespace
 
 EdgeGeometry::EdgeGeometry(const Features& features, int edge_index) : smooth_angle_deg_(features.smooth_angle_deg) {
@@ -63,13 +76,11 @@ EdgeGeometry::EdgeGeometry(const Features& features, int edge_index) : smooth_an
     side.pcurve = BRep_Tool::CurveOnSurface(TopoDS::Edge(edge.Oriented(side.in_face)), fwd, first, last);
     side.surface = std::make_shared<BRepAdaptor_Surface>(fwd, Standard_False);
     // Only the inset normals need it: a face without bounds still has normals on its edges.
-    try {
-      double u0 = 0, u1 = 0, v0 = 0, v1 = 0;
-      BRepTools::UVBounds(fwd, u0, u1, v0, v1);
-      side.uv_extent = std::max(u1 - u0, v1 - v0);
-    } catch (const Standard_Failure&) {
-      side.uv_extent = 0.0;
-    }
+    const int fi = features.edge_faces[edge_index][i];
+    const std::array<double, 4> b = fi < static_cast<int>(features.face_uv_bounds.size())
+                                        ? features.face_uv_bounds[fi]
+                                        : uv_bounds(fwd);
+    side.uv_extent = std::isnan(b[0]) ? 0.0 : std::max(b[1] - b[0], b[3] - b[2]);
   }
 }
 
@@ -135,6 +146,8 @@ EdgePoint EdgeGeometry::at(double t, double inset) const {
 }
 
 EdgePoint edge_point(const Features& features, int edge_index, double t) {
+  if (edge_index < static_cast<int>(features.edge_geometry.size()) && features.edge_geometry[edge_index])
+    return features.edge_geometry[edge_index]->at(t);
   return EdgeGeometry(features, edge_index).at(t);
 }
 
@@ -146,11 +159,10 @@ struct Votes {
   int convex = 0, concave = 0, defined = 0;
 };
 
-Votes vote_along(const Features& f, int e, double first, double last, double inset) {
+Votes vote_along(const EdgeGeometry& geometry, double first, double last, double inset) {
   // Ends and interior: an edge can change character along its length (a blend that runs out).
   constexpr int kPoints = 9;
   Votes votes;
-  const EdgeGeometry geometry(f, e);
   for (int i = 0; i < kPoints; ++i) {
     const double t = first + (last - first) * i / (kPoints - 1);
     PointKind k;
@@ -166,16 +178,27 @@ Votes vote_along(const Features& f, int e, double first, double last, double ins
   return votes;
 }
 
-EdgeKind classify_edge(const Features& f, int e) {
+// Also makes the edge's geometry (f.edge_geometry[e]) for the later stages.
+EdgeKind classify_edge(Features& f, int e) {
   const TopoDS_Edge& edge = TopoDS::Edge(f.edges(e + 1));
   if (BRep_Tool::Degenerated(edge)) return EdgeKind::Degenerate;
-  if (f.edge_faces[e][0] == f.edge_faces[e][1]) return EdgeKind::Seam;
+  if (f.edge_faces[e][0] == f.edge_faces[e][1]) {
+    // The sampler asks a seam's normals too; where they cannot be had, it does without.
+    try {
+      f.edge_geometry[e] = std::make_shared<const EdgeGeometry>(f, e);
+    } catch (const Standard_Failure&) {
+    } catch (const GeometryError&) {
+    }
+    return EdgeKind::Seam;
+  }
   double first = 0, last = 0;
   BRep_Tool::Range(edge, first, last);
-  Votes votes = vote_along(f, e, first, last, 0.0);
+  const auto geometry = std::make_shared<const EdgeGeometry>(f, e);
+  f.edge_geometry[e] = geometry;
+  Votes votes = vote_along(*geometry, first, last, 0.0);
   // No point of the edge has both normals (a face collapsed all along it): its character is the
   // limit of the normals just inside the faces.
-  if (votes.defined == 0) votes = vote_along(f, e, first, last, kInset);
+  if (votes.defined == 0) votes = vote_along(*geometry, first, last, kInset);
   // Still none: nothing to tell a feature by; a smooth edge needs no normal downstream.
   if (votes.convex == 0 && votes.concave == 0) return EdgeKind::Smooth;
   if (votes.convex == votes.defined) return EdgeKind::Convex;
@@ -246,9 +269,13 @@ Features classify_features(const TopoDS_Solid& solid, double smooth_angle_deg) {
   TopExp::MapShapes(solid, TopAbs_VERTEX, f.vertices);
   TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
   TopExp::MapShapesAndUniqueAncestors(solid, TopAbs_EDGE, TopAbs_FACE, edge_faces);
+  f.face_uv_bounds.reserve(f.faces.Extent());
+  for (int fi = 1; fi <= f.faces.Extent(); ++fi)
+    f.face_uv_bounds.push_back(uv_bounds(TopoDS::Face(f.faces(fi).Oriented(TopAbs_FORWARD))));
   const int ne = f.edges.Extent();
   f.edge_faces.assign(ne, {-1, -1});
   f.edge_kind.assign(ne, EdgeKind::Smooth);
+  f.edge_geometry.assign(ne, nullptr);
   for (int e = 0; e < ne; ++e) {
     const TopoDS_Shape& edge = f.edges(e + 1);
     const TopTools_ListOfShape& faces = edge_faces.FindFromKey(edge);
@@ -275,8 +302,6 @@ Features classify_features(const TopoDS_Solid& solid, double smooth_angle_deg) {
   f.sharp_vertex.assign(nv, false);
   TopTools_IndexedDataMapOfShapeListOfShape vertex_edges;
   TopExp::MapShapesAndUniqueAncestors(solid, TopAbs_VERTEX, TopAbs_EDGE, vertex_edges);
-  // Each sharp edge is asked at both its vertices: its curve, pcurves and adaptors once.
-  std::vector<std::unique_ptr<EdgeGeometry>> geometry(f.edge_kind.size());
   for (int v = 0; v < nv; ++v) {
     const TopoDS_Vertex& vertex = TopoDS::Vertex(f.vertices(v + 1));
     if (!vertex_edges.Contains(vertex)) continue;
@@ -294,8 +319,7 @@ Features classify_features(const TopoDS_Solid& solid, double smooth_angle_deg) {
       // The character of the edge at this vertex, not on average.
       const double t = BRep_Tool::Parameter(vertex, edge);
       try {
-        if (!geometry[e]) geometry[e] = std::make_unique<EdgeGeometry>(f, e);
-        if (geometry[e]->at(t).kind == PointKind::Convex) convex = true;
+        if (f.edge_geometry[e]->at(t).kind == PointKind::Convex) convex = true;
       } catch (const GeometryError&) {
         if (kind == EdgeKind::Convex) convex = true;  // normal undefined at the end: the edge says
       }

@@ -46,6 +46,8 @@ struct EdgePoint {
   double dihedral_deg = 180.0;  ///< interior angle between the faces (180 = smooth)
 };
 
+class EdgeGeometry;
+
 /// The indexed topology of a solid and the character of its edges and vertices.
 /// Index i of a vector is index i+1 of the matching OpenCASCADE map.
 struct Features {
@@ -55,6 +57,12 @@ struct Features {
   std::vector<bool> nonconcave_corner;              ///< #vertices: the inner medial axis reaches it
   std::vector<bool> sharp_vertex;                   ///< #vertices: on a sharp edge or a singular point
   double smooth_angle_deg = 1.0;                    ///< normals closer than this count as smooth
+  /// #faces: BRepTools::UVBounds as (u0, u1, v0, v1), NaN where it failed. Found once: on a plane
+  /// without curves on it, every call projects every edge of the face again.
+  std::vector<std::array<double, 4>> face_uv_bounds;
+  /// #edges: each edge's geometry, made once for the classification and the sampling (null on
+  /// degenerate edges and where it could not be made). Not for use on two threads at once.
+  std::vector<std::shared_ptr<const EdgeGeometry>> edge_geometry;
 };
 
 /// Classifies every edge from normals at several points along it (ends and interior), and every

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <future>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -148,11 +149,14 @@ std::vector<SolidSampling> sample_solids(const std::vector<TopoDS_Solid>& solids
   const int passes = params.spacing > 0 ? 1 : 3;
   const double target = params.target_samples > 0 ? static_cast<double>(params.target_samples)
                                                    : static_cast<double>(SamplingParams::default_target_samples);
+  // One sampler per solid for all passes: what a pass leaves unchanged is not redone.
+  std::vector<std::unique_ptr<SolidSampler>> samplers;
+  for (size_t i = 0; i < solids.size(); ++i) samplers.push_back(std::make_unique<SolidSampler>(solids[i], features[i]));
   for (int pass = 0; pass < passes; ++pass) {
     out.clear();
     double total = 0;
     for (size_t i = 0; i < solids.size(); ++i) {
-      out.push_back({sample_solid(solids[i], features[i], spacing, progress), SpacingField(spacing), {}});
+      out.push_back({samplers[i]->sample(SpacingField(spacing), progress), SpacingField(spacing), {}});
       total += static_cast<double>(out.back().samples.size());
     }
     const double miss = total / target;
@@ -172,7 +176,7 @@ std::vector<SolidSampling> sample_solids(const std::vector<TopoDS_Solid>& solids
       continue;
     }
     s.field.measure_on(s.samples, features[i].edge_faces);
-    s.samples = sample_solid(solids[i], features[i], s.field, progress);
+    s.samples = samplers[i]->sample(s.field, progress);
   }
   return out;
 }

@@ -7,7 +7,9 @@
 #include <chrono>
 #include <cmath>
 #include <future>
+#include <limits>
 #include <memory>
+#include <tuple>
 #include <optional>
 #include <random>
 #include <unordered_map>
@@ -64,16 +66,75 @@ struct ChainPoint {
   int point = -1;  ///< its edge_point() in Sampler::edge_points_, -1 on corners or where it failed
 };
 
+}  // namespace
+
+namespace sampling_detail {
+
+// One face's interior samples, before they get their sample ids, and the box of the candidates
+// that asked whether a sample lay near (empty: none asked).
+struct FaceInterior {
+  std::vector<Point3> point, normal;
+  std::vector<float> curvature;
+  std::vector<std::array<double, 2>> uv;
+  Point3 probed_lo{kInf, kInf, kInf}, probed_hi{-kInf, -kInf, -kInf};
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+};
+
+// A face's mean metric and its lattice of candidates over its parameter bounds: cells of about
+// half the smallest local spacing in space (metric and curvature probed on a 13 x 13 grid).
+struct FacePlan {
+  bool planar = false;
+  double spacing = 0;  ///< the local spacing the lattice is fine enough for
+  double u_scale = 1, v_scale = 1;
+  double u0 = 0, u1 = 0, v0 = 0, v1 = 0;  ///< the face's parameter bounds
+  UvLattice lattice;
+};
+
+// A sample placed before the face interiors, as the interiors' crowding test sees it.
+struct FixedSample {
+  Point3 point, normal;
+  double exclusion;
+  bool operator<(const FixedSample& o) const {
+    return std::tie(point, normal, exclusion) < std::tie(o.point, o.normal, o.exclusion);
+  }
+  bool operator==(const FixedSample& o) const {
+    return point == o.point && normal == o.normal && exclusion == o.exclusion;
+  }
+};
+
+}  // namespace sampling_detail
+
+struct SolidSampler::State {
+  TopoDS_Solid solid;
+  Features features;
+  // Per face, made on first use; during the face interiors only the thread sampling a face
+  // touches its entries.
+  std::vector<std::unique_ptr<BRepAdaptor_Surface>> surfaces;
+  std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers;
+  double plan_spacing = 0;  ///< the spacing `plans` are for
+  std::vector<std::optional<sampling_detail::FacePlan>> plans;
+  // The last pass with one spacing everywhere: its fixed samples (sorted) and face interiors.
+  double last_spacing = 0;
+  std::vector<sampling_detail::FixedSample> last_fixed;
+  std::vector<sampling_detail::FaceInterior> last_interiors;
+  int kept_faces = 0;  ///< by the last pass
+};
+
+namespace {
+
+using namespace sampling_detail;
+
 class Sampler {
  public:
-  Sampler(const TopoDS_Solid& solid, const Features& f, const SpacingField& field, const Progress& progress)
-      : solid_(solid), f_(f), sp_(sample_spacing(field.uniform())), field_(field), progress_(progress),
-        grid_(field.uniform()) {
+  Sampler(SolidSampler::State& state, const SpacingField& field, const Progress& progress)
+      : state_(state), f_(state.features), sp_(sample_spacing(field.uniform())), field_(field), progress_(progress),
+        grid_(field.uniform()), surfaces_(state.surfaces), classifiers_(state.classifiers), plans_(state.plans) {
     out_.spacing = field.uniform();
-    const int nf = f.faces.Extent();
+    const int nf = f_.faces.Extent();
     surfaces_.resize(nf);
     classifiers_.resize(nf);
-    plans_.resize(nf);
+    if (state.plan_spacing != field.uniform()) plans_.assign(nf, std::nullopt);
+    state.plan_spacing = field.uniform();
     lattices_.resize(nf);
   }
 
@@ -230,18 +291,23 @@ class Sampler {
           params.push_back({ti, SampleTag::Edge});
         }
         if (rest_b > 0) params.push_back({b, SampleTag::Ball});
-        // The edge's curves and faces looked up once for all its samples (edge_point per sample
-        // was 40 % of sampling); where that fails, every edge_point would have.
-        std::optional<EdgeGeometry> geometry;
-        try {
-          geometry.emplace(f_, e);
-        } catch (const Standard_Failure&) {
-        } catch (const GeometryError&) {
+        // The edge's curves and faces, looked up once by the classification (edge_point per
+        // sample was 40 % of sampling); where that failed, every edge_point would have.
+        const EdgeGeometry* geometry = nullptr;
+        std::optional<EdgeGeometry> own;  // for features made without their geometry
+        if (e < static_cast<int>(f_.edge_geometry.size())) {
+          geometry = f_.edge_geometry[e].get();
+        } else {
+          try {
+            geometry = &own.emplace(f_, e);
+          } catch (const Standard_Failure&) {
+          } catch (const GeometryError&) {
+          }
         }
         for (const auto& [t, tag] : params) {
           const int id = add(to_point(curve.Value(t)), tag, excl);
           out_.edge[id] = e;
-          chain.push_back({id, t, describe_edge_sample(id, e, geometry ? &*geometry : nullptr, t)});
+          chain.push_back({id, t, describe_edge_sample(id, e, geometry, t)});
         }
       } catch (const Standard_Failure& err) {
         throw GeometryError("edge " + std::to_string(e + 1) + ": cannot sample: " + err.GetMessageString());
@@ -383,26 +449,38 @@ class Sampler {
     const int nf = f_.faces.Extent();
     out_.faces.resize(nf);
     std::vector<FaceInterior> interiors(nf);
-    std::atomic<int> next{0}, done{0};
-    std::atomic<bool> stop{false};
-    // Largest faces first, so that the two threads end together.
-    std::vector<int> order(nf);
+    // A face that the last pass at this spacing sampled, and that nothing near changed since,
+    // keeps its samples (refining thin walls resamples the solid; most faces are not near them).
+    const std::vector<FixedSample> fixed = fixed_samples();
+    const bool same_spacing = state_.last_spacing == field_.uniform() && state_.last_interiors.size() == static_cast<size_t>(nf);
+    state_.kept_faces = 0;
+    std::vector<int> order;
     std::vector<double> cost(nf);
     for (int fi = 0; fi < nf; ++fi) {
-      order[fi] = fi;
+      const bool refine = field_.on_face(fi) < sp_.face;
+      if (same_spacing && !refine && same_near(fixed, state_.last_fixed, state_.last_interiors[fi])) {
+        interiors[fi] = state_.last_interiors[fi];
+        ++state_.kept_faces;
+        continue;
+      }
+      order.push_back(fi);
       const FacePlan& plan = face_plan(fi);
       cost[fi] = static_cast<double>(plan.lattice.nu) * static_cast<double>(plan.lattice.nv);
     }
+    // Largest faces first, so that the two threads end together.
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[a] > cost[b]; });
+    const int todo = static_cast<int>(order.size());
+    std::atomic<int> next{0}, done{0};
+    std::atomic<bool> stop{false};
     const auto work = [&](bool reports) {
       // Only this thread reports (the callback may hold Python's lock); the other polls `stop`.
       const std::function<void(double)> row =
-          reports ? std::function<void(double)>([&](double f) { report_faces(done + f, nf); })
+          reports ? std::function<void(double)>([&](double f) { report_faces(done + f, todo); })
                   : std::function<void(double)>([&](double) {
                       if (stop) throw Cancelled();
                     });
       try {
-        for (int k; !stop && (k = next++) < nf;) {
+        for (int k; !stop && (k = next++) < todo;) {
           const int fi = order[k];
           try {
             interiors[fi] = sample_face(fi, row);
@@ -416,14 +494,14 @@ class Sampler {
         throw;
       }
     };
-    if (nf < 2) {
+    if (todo < 2) {
       work(true);
     } else {
       std::future<void> other = std::async(std::launch::async, [&] { work(false); });
       try {
         work(true);
         // The user can still cancel while the other thread finishes its last face.
-        while (other.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) report_faces(done, nf);
+        while (other.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) report_faces(done, todo);
       } catch (...) {
         stop = true;
         other.wait();
@@ -442,25 +520,44 @@ class Sampler {
       }
       build_domain(fi);
     }
+    if (field_.is_uniform()) {
+      state_.last_spacing = field_.uniform();
+      state_.last_fixed = fixed;
+      state_.last_interiors = std::move(interiors);
+    }
+  }
+
+  // The samples placed so far, as the face interiors' crowding test sees them, sorted.
+  std::vector<FixedSample> fixed_samples() const {
+    std::vector<FixedSample> out(out_.points.size());
+    for (size_t i = 0; i < out.size(); ++i) out[i] = {out_.points[i], out_.normal[i], exclusion_[i]};
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  // Whether the fixed samples within a spacing of where the face's candidates asked (every
+  // crowding test looks at most that far) are the same in both lists.
+  bool same_near(const std::vector<FixedSample>& a, const std::vector<FixedSample>& b, const FaceInterior& face) const {
+    const double reach = sp_.face;
+    const Point3 lo{face.probed_lo[0] - reach, face.probed_lo[1] - reach, face.probed_lo[2] - reach};
+    const Point3 hi{face.probed_hi[0] + reach, face.probed_hi[1] + reach, face.probed_hi[2] + reach};
+    auto near = [&](const std::vector<FixedSample>& list) {
+      std::vector<const FixedSample*> out;
+      const auto first = std::lower_bound(list.begin(), list.end(), lo[0],
+                                          [](const FixedSample& s, double x) { return s.point[0] < x; });
+      for (auto it = first; it != list.end() && it->point[0] <= hi[0]; ++it)
+        if (it->point[1] >= lo[1] && it->point[1] <= hi[1] && it->point[2] >= lo[2] && it->point[2] <= hi[2])
+          out.push_back(&*it);
+      return out;
+    };
+    const auto na = near(a), nb = near(b);
+    if (na.size() != nb.size()) return false;
+    for (size_t k = 0; k < na.size(); ++k)
+      if (!(*na[k] == *nb[k])) return false;
+    return true;
   }
 
   void report_faces(double faces_done, int nf) { report(progress_, "sampling", 0.2 + 0.8 * faces_done / std::max(1, nf)); }
-
-  // One face's interior samples, before they get their sample ids.
-  struct FaceInterior {
-    std::vector<Point3> point, normal;
-    std::vector<float> curvature;
-    std::vector<std::array<double, 2>> uv;
-  };
-
-  // A face's mean metric and its lattice of candidates over its parameter bounds: cells of about
-  // half the smallest local spacing in space (metric and curvature probed on a 13 x 13 grid).
-  struct FacePlan {
-    bool planar = false;
-    double spacing = 0;  ///< the local spacing the lattice is fine enough for
-    double u_scale = 1, v_scale = 1;
-    UvLattice lattice;
-  };
 
   const FacePlan& face_plan(int fi) {
     if (plans_[fi]) return *plans_[fi];
@@ -468,7 +565,12 @@ class Sampler {
     const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
     const BRepAdaptor_Surface& surf = surface(fi);
     double u0, u1, v0, v1;
-    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    if (fi < static_cast<int>(f_.face_uv_bounds.size()) && !std::isnan(f_.face_uv_bounds[fi][0])) {
+      const std::array<double, 4>& b = f_.face_uv_bounds[fi];
+      u0 = b[0], u1 = b[1], v0 = b[2], v1 = b[3];
+    } else {
+      BRepTools::UVBounds(face, u0, u1, v0, v1);  // throws where the classification's failed
+    }
     const bool planar = surf.GetType() == GeomAbs_Plane;
     // Probe the metric and curvature.
     constexpr int kProbe = 12;
@@ -506,6 +608,7 @@ class Sampler {
     }
     plan.planar = planar;
     plan.spacing = r_min;
+    plan.u0 = u0, plan.u1 = u1, plan.v0 = v0, plan.v1 = v1;
     plan.lattice = {u0, v0, (u1 - u0) / nu, (v1 - v0) / nvv, nu, nvv};
     return *(plans_[fi] = plan);
   }
@@ -549,6 +652,10 @@ class Sampler {
     n.Normalize();
     if (face.Orientation() == TopAbs_REVERSED) n.Reverse();
     const Point3 nc = to_point(n);
+    for (int a = 0; a < 3; ++a) {
+      in.probed_lo[a] = std::min(in.probed_lo[a], c[a]);
+      in.probed_hi[a] = std::max(in.probed_hi[a], c[a]);
+    }
     // The cheap tests first: most candidates fall within reach of a sample already placed. A
     // sample on a wall facing this one (a thin plate's other side, or across a narrow face) is
     // no neighbour: each wall needs its own samples for the sheet between them.
@@ -577,9 +684,6 @@ class Sampler {
     std::uniform_real_distribution<double> jitter(-0.35, 0.35);
     const BRepAdaptor_Surface& surf = surface(fi);
     const FacePlan& plan = face_plan(fi);
-    FaceDomain& dom = out_.faces[fi];
-    dom.u_scale = plan.u_scale;
-    dom.v_scale = plan.v_scale;
     const long nu = plan.lattice.nu, nvv = plan.lattice.nv;
     const double u0 = plan.lattice.u0, v0 = plan.lattice.v0, du = plan.lattice.du, dv = plan.lattice.dv;
     LatticeClassifier& inside = lattice(fi);
@@ -621,8 +725,10 @@ class Sampler {
     const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
     const TopoDS_Face fwd = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
     FaceDomain& dom = out_.faces[fi];
-    double u0, u1, v0, v1;
-    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    const FacePlan& plan = face_plan(fi);
+    dom.u_scale = plan.u_scale;
+    dom.v_scale = plan.v_scale;
+    const double u0 = plan.u0, u1 = plan.u1, v0 = plan.v0, v1 = plan.v1;
     const double tol = 1e-6 * std::max({u1 - u0, v1 - v0, 1e-12});
     // Chains of adjacent edges meet at a corner: one local point per (sample, uv). A sample has
     // several only on seams and degenerate edges, where its uv differ by much more than tol.
@@ -667,7 +773,7 @@ class Sampler {
     }
   }
 
-  const TopoDS_Solid& solid_;
+  SolidSampler::State& state_;
   const Features& f_;
   SampleSpacing sp_;
   const SpacingField& field_;
@@ -681,15 +787,32 @@ class Sampler {
   std::vector<std::vector<ChainPoint>> chains_;
   std::vector<EdgePoint> edge_points_;
   std::unordered_map<int, std::vector<std::pair<int, std::array<double, 2>>>> face_points_;
-  // Per face, made on first use; during the face interiors only the thread sampling a face
-  // touches its entries.
-  std::vector<std::unique_ptr<BRepAdaptor_Surface>> surfaces_;
-  std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers_;
-  std::vector<std::optional<FacePlan>> plans_;
+  // The solid's per-face state (kept between passes), and the lattices of this pass.
+  std::vector<std::unique_ptr<BRepAdaptor_Surface>>& surfaces_;
+  std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>>& classifiers_;
+  std::vector<std::optional<FacePlan>>& plans_;
   std::vector<std::unique_ptr<LatticeClassifier>> lattices_;
 };
 
 }  // namespace
+
+SolidSampler::SolidSampler(const TopoDS_Solid& solid, const Features& features) : state_(std::make_unique<State>()) {
+  state_->solid = solid;
+  state_->features = features;
+}
+
+SolidSampler::~SolidSampler() = default;
+
+int SolidSampler::kept_faces() const { return state_->kept_faces; }
+
+Samples SolidSampler::sample(const SpacingField& field, const Progress& progress) {
+  if (!(field.uniform() > 0) || !std::isfinite(field.uniform())) throw InvalidInput("spacing must be a positive number");
+  try {
+    return Sampler(*state_, field, progress).run();
+  } catch (const Standard_Failure& err) {
+    throw GeometryError(std::string("sampling failed: ") + err.GetMessageString());
+  }
+}
 
 Samples sample_solid(const TopoDS_Solid& solid, const Features& features, double spacing, const Progress& progress) {
   if (!(spacing > 0) || !std::isfinite(spacing)) throw InvalidInput("spacing must be a positive number");
@@ -698,11 +821,7 @@ Samples sample_solid(const TopoDS_Solid& solid, const Features& features, double
 
 Samples sample_solid(const TopoDS_Solid& solid, const Features& features, const SpacingField& field,
                      const Progress& progress) {
-  try {
-    return Sampler(solid, features, field, progress).run();
-  } catch (const Standard_Failure& err) {
-    throw GeometryError(std::string("sampling failed: ") + err.GetMessageString());
-  }
+  return SolidSampler(solid, features).sample(field, progress);
 }
 
 SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <TopoDS_Solid.hxx>
@@ -34,6 +35,28 @@ Samples sample_solid(const TopoDS_Solid& solid, const Features& features, double
 /// cells are cut finer where the field is smaller than the face's spacing.
 Samples sample_solid(const TopoDS_Solid& solid, const Features& features, const SpacingField& field,
                      const Progress& progress = {});
+
+/// Samples one solid pass after pass (calibrating the spacing, refining thin walls) without redoing
+/// what a pass leaves unchanged: each face's surface, classifier and candidate lattice and, when a
+/// pass repeats the last uniform pass's spacing, the interior samples of every face that is not
+/// refined and near which no earlier sample changed. The samples are those sample_solid places.
+class SolidSampler {
+ public:
+  /// Keeps copies of the solid's handle and of `features`.
+  SolidSampler(const TopoDS_Solid& solid, const Features& features);
+  ~SolidSampler();
+  SolidSampler(const SolidSampler&) = delete;
+  SolidSampler& operator=(const SolidSampler&) = delete;
+
+  Samples sample(const SpacingField& field, const Progress& progress = {});
+  /// How many faces the last sample() took over from the pass before.
+  int kept_faces() const;
+
+  struct State;
+
+ private:
+  std::unique_ptr<State> state_;
+};
 
 /// Surface area of the solid's faces and the total length of its edges (for planning).
 struct SolidMeasure {
