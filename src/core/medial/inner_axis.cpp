@@ -50,6 +50,45 @@ int vote(const Samples& samples, int s, const Point3& x) {
   return 0;
 }
 
+// A sample lies on the boundary and inside its own Voronoi cell, so the cell always holds some
+// exterior: if every Delaunay cell at the sample is labelled inside, all facets of its Voronoi
+// cell are kept and close a void in the axis. That happens at concave edges with an exterior wedge
+// under 90 degrees: a cell spanning the wedge has its circumcentre just beyond one face, inside the
+// solid, when its samples on the two faces are at unequal distances from the edge. The vertex
+// farthest along the sample's outward direction d (the normal; at an edge, the sum of the two
+// normals) has the ball holding most of the exterior off the sample: it goes outside, which opens
+// the void (with the other facets at that vertex). Samples whose cell is open are left alone.
+void open_closed_sample_cells(const MedialComplex& mc, const Samples& samples, std::vector<std::uint8_t>& label) {
+  const std::size_t ns = samples.size(), nc = mc.num_cells();
+  std::vector<char> open(ns, 0);
+  std::vector<int> farthest(ns, -1);
+  std::vector<double> best(ns, 0.0);
+  for (std::size_t id = 0; id < nc; ++id) {
+    const auto& cs = mc.cell_samples[id];
+    // Merged cells (coincident circumcentres) are labelled through their representative.
+    const int r = mc.rep.empty() ? static_cast<int>(id) : mc.rep[id];
+    for (int j = 0; j < 4; ++j) {
+      const int s = cs[j];
+      // A sample on the hull has an unbounded Voronoi cell: open already.
+      if (!label[r] || mc.cell_neighbors[id][j] < 0) {
+        if (!label[r]) open[s] = 1;
+        if (mc.cell_neighbors[id][j] < 0)
+          for (int k = 0; k < 4; ++k)
+            if (k != j) open[cs[k]] = 1;
+        continue;
+      }
+      Point3 d = samples.normal[s];
+      const SampleTag tag = samples.tag[s];
+      if (tag == SampleTag::Edge || tag == SampleTag::Ball)
+        for (int k = 0; k < 3; ++k) d[k] += samples.normal2[s][k];
+      const double along = dot(sub(mc.centers[r], samples.points[s]), d);
+      if (farthest[s] < 0 || along > best[s]) farthest[s] = r, best[s] = along;
+    }
+  }
+  for (std::size_t s = 0; s < ns; ++s)
+    if (!open[s] && farthest[s] >= 0 && best[s] > 0) label[farthest[s]] = 0;
+}
+
 // The face-by-face reconstruction is a closed triangle mesh within its sag of the true surface.
 // A point farther from it than that sag, whose nearest mesh point lies inside a triangle, is on
 // the side of that triangle's outward normal: inside (1), outside (0), or undecided (-1).
@@ -525,6 +564,7 @@ std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& s
     for (size_t k = b; k < e; ++k) label[unsure[k]] = exact[k - b];
   }
   st.exact_inside_tests += unsure.size();
+  open_closed_sample_cells(mc, samples, label);
   return label;
 }
 
