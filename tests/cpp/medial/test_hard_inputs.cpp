@@ -265,6 +265,18 @@ std::vector<int> case_indices() {
 INSTANTIATE_TEST_SUITE_P(Solids, HardInputs, ::testing::ValuesIn(case_indices()),
                          [](const ::testing::TestParamInfo<int>& info) { return hard_cases()[info.param].name; });
 
+// A boss whose axis lies outside the block meets the block's face along concave edges with an
+// exterior angle of acos(3/8) = 68 degrees. Cells spanning that wedge have their circumcentres just
+// inside the block when their face samples are at unequal distances from the edge; an edge sample
+// all of whose cells did so had its whole Voronoi cell kept, a void of the axis (V - E + F was 3 at
+// this spacing, 2 at 0.4 and 0.55, before such closed sample cells were opened).
+TEST(SharpConcaveEdges, CloseNoVoidInTheAxis) {
+  const auto make = [] { return make_block_with_outside_boss(40, 20, 30, 8, 3); };
+  const MedialMesh& m = medial_axis_of("outside_boss_0.45", make, 0.45).mesh;
+  EXPECT_EQ(solid_euler_characteristic(make()), 1);
+  EXPECT_EQ(euler_characteristic(m, 40.0), 1);
+}
+
 // The solids themselves: the Euler characteristic the engine is held to must be the right one.
 TEST(HardSolids, HoledPlatesHaveEulerCharacteristicOneMinusHoles) {
   EXPECT_EQ(solid_euler_characteristic(make_plate_with_holes(60, 40, 3, 6, 4, 2.0, false)), 1 - 24);

@@ -116,6 +116,13 @@ TopoDS_Solid make_block_with_boss(double a, double b, double c, double r, double
   return single_valid_solid(unified(fuse(block, boss)), "make_block_with_boss");
 }
 
+TopoDS_Solid make_block_with_outside_boss(double a, double b, double c, double r, double offset) {
+  const TopoDS_Shape block = BRepPrimAPI_MakeBox(a, b, c).Shape();
+  const TopoDS_Shape boss =
+      BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(a / 2, -offset, c / 6), gp_Dir(0, 0, 1)), r, 2 * c / 3).Shape();
+  return single_valid_solid(unified(fuse(block, boss)), "make_block_with_outside_boss");
+}
+
 TopoDS_Solid make_sharp_wedge(double angle_deg, double length, double height) {
   return make_prism({{0, 0}, {length, 0}, {length, length * std::tan(angle_deg * kPi / 180)}}, height);
 }

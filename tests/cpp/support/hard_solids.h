@@ -16,6 +16,12 @@ TopoDS_Solid make_block_with_rib(double a, double b, double c, double w, double 
 /// standing on the centre of its top face.
 TopoDS_Solid make_block_with_boss(double a, double b, double c, double r, double boss_height);
 
+/// The block [0,a] x [0,b] x [0,c] fused with the cylinder of radius r about the vertical line
+/// (a/2, -offset), z in [c/6, 5c/6], whose axis lies outside the block's face y = 0 (0 < offset < r):
+/// the cylinder meets that face along two concave edges with an exterior angle of
+/// acos(offset / r), under 90 degrees.
+TopoDS_Solid make_block_with_outside_boss(double a, double b, double c, double r, double offset);
+
 /// The prism over the triangle (0,0) (length,0) (length, length tan(angle)), z in [0, height]:
 /// its edge on the z axis has the dihedral angle `angle_deg`.
 TopoDS_Solid make_sharp_wedge(double angle_deg, double length, double height);
