@@ -85,6 +85,7 @@ struct MedialComplex {
   CellArray<std::array<int, 4>> cell_neighbors;  ///< per cell id: the cell across the facet opposite each corner, -1 off the hull
   CellArray<Point3> centers;   ///< circumcentre per cell id
   CellArray<double> radii;     ///< circumradius per cell id
+  CellArray<std::uint8_t> flat;  ///< per cell id: 1 while its samples are coplanar to rounding (settle_flat_cells)
   std::vector<int> start{0};     ///< CSR over nodes
   std::vector<int> nodes;
   std::vector<FaceKind> kind;

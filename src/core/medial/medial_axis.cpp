@@ -62,6 +62,7 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
         cell_centers(samples.points, mc, nc / 2, nc);
     });
   }
+  settle_flat_cells(samples.points, mc);
   st.timings.push_back({"selection", seconds_since(t0)});
 
   t0 = Clock::now();
