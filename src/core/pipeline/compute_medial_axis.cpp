@@ -313,7 +313,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt.
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9));
       MedialAxisStats ms;
-      const MedialMesh mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, sub);
+      MedialMesh mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, sub);
       warn_of_thin_walls(thin, sampled[i].field, i, n, ss, stats.warnings);
       add_timing(stats.timings, "reconstruction", reconstruction_seconds);
       for (const auto& [stage, s] : ms.timings) add_timing(stats.timings, stage, s);
@@ -328,7 +328,11 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       ss.exact_inside_tests = ms.exact_inside_tests;
       stats.samples += ss.samples;
       stats.solids.push_back(ss);
-      result.mesh.append(mesh);
+      // The first solid's mesh is moved, not copied (one solid is the usual case).
+      if (result.mesh.num_vertices() == 0 && result.mesh.num_faces() == 0 && result.mesh.num_edges() == 0)
+        result.mesh = std::move(mesh);
+      else
+        result.mesh.append(mesh);
     }
   } catch (const Standard_Failure& err) {
     throw GeometryError(std::string("OpenCASCADE failed: ") + err.GetMessageString());
