@@ -20,8 +20,9 @@ namespace cadmedial::internal {
 std::vector<int> coincident_cells(const MedialComplex& mc, double eps);
 /// Merges the cells by `rep` (coincident_cells) in mc's faces, centres and stars.
 void merge_coincident_cells(MedialComplex& mc, std::vector<int> rep, const Progress& progress);
-/// 1 inside, 0 outside, per cell id of mc.
-std::vector<std::uint8_t> label_inside(const MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
+/// 1 inside, 0 outside, per cell id of mc. Vertices just outside that would cut a hole in the
+/// sheet at a sharp convex edge are labelled inside and moved just inside (fill_sheet_holes).
+std::vector<std::uint8_t> label_inside(MedialComplex& mc, const Samples& samples, const Umbrellas& umbrellas,
                                        const InsideTest& inside, MedialAxisStats& st, const Progress& progress);
 /// The faces whose Voronoi vertices are all inside, with the topology of the inner Voronoi complex,
 /// in the pieces kept, as a mesh; segments where facets degenerated to one. Sets the stats of
