@@ -17,16 +17,12 @@ inline bool known_weakness(const std::string& test, const std::string& name) {
       // Hard inputs (test_hard_inputs.cpp; figures measured on the hard-inputs branch).
       // Where a 3-degree wedge is thinner than about h (0.83 to 1.04 h) the axis stops: its edge is 3.97
       // from the output at h = 0.25 (missing length ~ h / tan(angle): 0.72 at 20 degrees, 1.28 at
-      // 10, 2.4 at 5); the 4.2.2 completion does not bridge it. V - E + F = -28 with adaptive
-      // sampling (the wedge is refined to h / 4 where it is thin; it stays thinner than that near
-      // its edge).
+      // 10, 2.4 at 5); the 4.2.2 completion does not bridge it. V - E + F = -4 with adaptive
+      // sampling (-28 before fill_sheet_holes; the wedge is refined to h / 4 where it is thin; it
+      // stays thinner than that near its edge).
       {"ConvexEdges", "SharpWedge3deg"},
       {"Corners", "SharpWedge3deg"},
       {"Euler", "SharpWedge3deg"},
-      // V - E + F = -4 (-30 with adaptive sampling, which refines the wedge near its edge): holes
-      // in the bisector sheet of the 30-degree edge within 5 of it (radius up to 1.3); the Voronoi facets alone have them too, and they do not change with theta
-      // (2 to 20) or rho (4 to 1000): not the Angle/Ratio selection. 25 and 45 degrees pass (40: 0).
-      {"Euler", "SharpWedge30deg"},
       // A 175-degree convex edge: 14 of its points are 0.48 (2.4 h) from the output (178
       // degrees: 1.10, 179: 2.12).
       {"ConvexEdges", "FlatConvexEdge175deg"},

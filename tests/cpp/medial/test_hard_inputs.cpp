@@ -319,4 +319,19 @@ TEST(HardSolids, SharpAndFlatEdgesAreClassifiedAsBuilt) {
 }
 
 }  // namespace
+// A prism over a pentagon with a V-notch: the notch's faces meet the side faces along convex edges
+// of 35 degrees (and each other along a concave edge of a 70-degree exterior wedge). The sheet that
+// bisects a sharp convex edge is thinner near it than the samples are apart; Voronoi vertices a
+// hair beyond one face in the middle of that sheet cut holes in it (V - E + F was -40 at spacing
+// 0.258, -45 on the 30-degree triangle prism's edge, before fill_sheet_holes).
+TEST(SharpConvexEdges, LeaveNoHolesInTheBisectorSheet) {
+  const double bend = 55.0 * 3.14159265358979323846 / 180.0;
+  const auto make = [bend] {
+    return make_prism({{0, 0}, {20, 0}, {20, 20}, {10, 20 - 10 * std::tan(bend)}, {0, 20}}, 10);
+  };
+  const MedialMesh& m = medial_axis_of("notched_prism_55_0.258", make, 0.258).mesh;
+  EXPECT_EQ(solid_euler_characteristic(make()), 1);
+  EXPECT_EQ(euler_characteristic(m, 20.0), 1);
+}
+
 }  // namespace cadmedial::test
