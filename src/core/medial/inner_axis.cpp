@@ -146,6 +146,11 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
   std::vector<char> spoiled(nc, 0);
   for (std::size_t f = 0; f < nf; ++f) {
     if (!selected(f)) continue;
+    // A facet without a straddling corner belongs to no group that can go inside (most of the
+    // outer axis's facets): leave it out.
+    bool straddled = false;
+    for (int k = mc.start[f]; k < mc.start[f + 1] && !straddled; ++k) straddled = joins(mc.nodes[k]);
+    if (!straddled) continue;
     int root = -1;
     bool two = false;
     for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
