@@ -837,7 +837,14 @@ SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) 
     double kappa = 0;
     if (surf.GetType() != GeomAbs_Plane) {
       double u0, u1, v0, v1;
-      BRepTools::UVBounds(face, u0, u1, v0, v1);
+      // The bounds the classification found, where it could.
+      const bool known = fi - 1 < static_cast<int>(features.face_uv_bounds.size()) && !std::isnan(features.face_uv_bounds[fi - 1][0]);
+      if (known) {
+        const std::array<double, 4>& b = features.face_uv_bounds[fi - 1];
+        u0 = b[0], u1 = b[1], v0 = b[2], v1 = b[3];
+      } else {
+        BRepTools::UVBounds(face, u0, u1, v0, v1);
+      }
       BRepLProp_SLProps sl(surf, 2, 1e-9);
       int n = 0;
       for (int i = 0; i < 6; ++i)
