@@ -465,8 +465,14 @@ void check_geometry(const TopoDS_Shape& shape) {
   }
 }
 
+void run_check(const DeferredCheck& check) {
+  BRepCheck_Analyzer analyzer(check.solid);
+  if (!analyzer.IsValid()) throw InvalidInput(check.name + ": " + first_check_failure(check.solid, analyzer));
+}
+
 // Checks a solid; returns it, reversed when its volume came out negative (faces oriented inward).
-TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name) {
+// BRepCheck_Analyzer's check is added to `deferred` when given, else run here.
+TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name, std::vector<DeferredCheck>* deferred) {
   TopTools_IndexedMapOfShape edge_index;
   TopExp::MapShapes(solid, TopAbs_EDGE, edge_index);
   int nshells = 0;
@@ -490,8 +496,10 @@ TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name) {
     throw InvalidInput(name + ": has zero volume (flat, or partly inside out)");
   if (volume < 0) solid.Reverse();
 
-  BRepCheck_Analyzer analyzer(solid);
-  if (!analyzer.IsValid()) throw InvalidInput(name + ": " + first_check_failure(solid, analyzer));
+  if (deferred)
+    deferred->push_back({solid, name});
+  else
+    run_check({solid, name});
   return solid;
 }
 
@@ -616,7 +624,10 @@ TopoDS_Shape read_brep_string(const std::string& text) {
   }
 }
 
-std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped) {
+namespace {
+
+std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped,
+                                         std::vector<DeferredCheck>* deferred) {
   if (shape.IsNull()) throw InvalidInput("the shape is empty (null)");
   enable_reader_fault_recovery();
   try {
@@ -630,7 +641,7 @@ std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<
     std::vector<TopoDS_Solid> solids;
     std::vector<std::string> open_parts;  // refused only when nothing else is there
     for (std::size_t i = 0; i < parts.solids.size(); ++i)
-      solids.push_back(checked_solid(parts.solids[i], "solid " + std::to_string(solids.size() + 1)));
+      solids.push_back(checked_solid(parts.solids[i], "solid " + std::to_string(solids.size() + 1), deferred));
 
     // Shells that are not inside a solid: each must be closed; then it becomes a solid. STEP
     // exporters often write a part as a shell whose faces do not share their edges (each face has
@@ -652,19 +663,21 @@ std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<
         }
         for (const TopoDS_Shell& shell : sewn)
           solids.push_back(checked_solid(solid_from_closed_shell(shell), "solid " + std::to_string(solids.size() + 1) +
-                                                                           " (sewn from shell " + std::to_string(i + 1) + ")"));
+                                                                           " (sewn from shell " + std::to_string(i + 1) + ")",
+                                         deferred));
         continue;
       }
       solids.push_back(checked_solid(solid_from_closed_shell(parts.shells[i]),
                                      "solid " + std::to_string(solids.size() + 1) + " (made from shell " +
-                                         std::to_string(i + 1) + ")"));
+                                         std::to_string(i + 1) + ")",
+                                     deferred));
     }
 
     if (!parts.faces.empty()) {
       try {
         for (const TopoDS_Shell& shell : sew_faces(parts.faces))
           solids.push_back(checked_solid(solid_from_closed_shell(shell),
-                                         "solid " + std::to_string(solids.size() + 1) + " (sewn from loose faces)"));
+                                         "solid " + std::to_string(solids.size() + 1) + " (sewn from loose faces)", deferred));
       } catch (const InvalidInput& e) {
         open_parts.push_back(e.what());
       }
@@ -686,6 +699,27 @@ std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<
       throw InvalidInput("holds no solid, closed shell or face" + (held.empty() ? std::string() : " (only " + held + ")"));
     }
     return solids;
+  } catch (const Standard_Failure& e) {
+    throw InvalidInput("checking the solids failed: " + failure_text(e));
+  }
+}
+
+}  // namespace
+
+std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped) {
+  return extract_solids(shape, skipped, nullptr);
+}
+
+std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped,
+                                         std::vector<DeferredCheck>& deferred) {
+  return extract_solids(shape, skipped, &deferred);
+}
+
+void run_deferred_checks(const std::vector<DeferredCheck>& checks) {
+  enable_reader_fault_recovery();
+  try {
+    OCC_CATCH_SIGNALS
+    for (const DeferredCheck& check : checks) run_check(check);
   } catch (const Standard_Failure& e) {
     throw InvalidInput("checking the solids failed: " + failure_text(e));
   }

@@ -25,4 +25,16 @@ TopoDS_Shape read_brep_string(const std::string& text);
 /// `skipped` when given.
 std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped = nullptr);
 
+/// A solid whose BRepCheck_Analyzer run extract_solids left for later: that run is most of its
+/// time, and the pipeline does it on its second thread while CGAL triangulates.
+struct DeferredCheck {
+  TopoDS_Solid solid;
+  std::string name;  ///< as extract_solids' messages name the solid ("solid 2 (made from shell 1)")
+};
+/// extract_solids with every check but BRepCheck_Analyzer's done; those are added to `deferred`.
+std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped,
+                                         std::vector<DeferredCheck>& deferred);
+/// Throws the InvalidInput that extract_solids would have thrown for the first invalid solid.
+void run_deferred_checks(const std::vector<DeferredCheck>& checks);
+
 }  // namespace cadmedial

@@ -246,27 +246,40 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
   try {
     auto t0 = Clock::now();
     report(progress, "reading", 0.0);
-    const std::vector<TopoDS_Solid> solids = extract_solids(shape);
+    // BRepCheck_Analyzer, most of the set-up's time, runs on the second thread while CGAL
+    // triangulates the first solid (that core is idle then); the other checks run here.
+    std::vector<DeferredCheck> checks;
+    const std::vector<TopoDS_Solid> solids = extract_solids(shape, nullptr, checks);
     add_timing(stats.timings, "setup", seconds_since(t0));
     const int n = static_cast<int>(solids.size());
 
-    t0 = Clock::now();
-    report(progress, "features", 0.0);
     std::vector<Features> features;
-    for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
-    add_timing(stats.timings, "features", seconds_since(t0));
+    Measure m;
+    double spacing = 0;
+    std::vector<SolidSampling> sampled;
+    try {
+      t0 = Clock::now();
+      report(progress, "features", 0.0);
+      for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
+      add_timing(stats.timings, "features", seconds_since(t0));
 
-    // The plan measures the solids with their features (a second classification cost as much).
-    t0 = Clock::now();
-    const Measure m = measure(solids, features);
-    const SamplingPlan sp = plan(m, params.sampling);
-    add_timing(stats.timings, "setup", seconds_since(t0));
+      // The plan measures the solids with their features (a second classification cost as much).
+      t0 = Clock::now();
+      m = measure(solids, features);
+      spacing = plan(m, params.sampling).spacing;
+      add_timing(stats.timings, "setup", seconds_since(t0));
 
-    t0 = Clock::now();
-    double spacing = sp.spacing;
-    const std::vector<SolidSampling> sampled = sample_solids(solids, features, params.sampling, spacing, progress);
-    stats.spacing = spacing;
-    add_timing(stats.timings, "sampling", seconds_since(t0));
+      t0 = Clock::now();
+      sampled = sample_solids(solids, features, params.sampling, spacing, progress);
+      stats.spacing = spacing;
+      add_timing(stats.timings, "sampling", seconds_since(t0));
+    } catch (const Cancelled&) {
+      throw;
+    } catch (...) {
+      // A solid that its check refuses can fail anywhere: the check's message says what is wrong.
+      run_deferred_checks(checks);
+      throw;
+    }
 
     for (int i = 0; i < n; ++i) {
       const TopoDS_Solid& solid = solids[i];
@@ -291,14 +304,19 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       // Python's lock); it checks a flag the main thread sets when it gives up (cancel, error),
       // so the future's destructor, which waits for it, does not wait long.
       report(sub, "reconstruction", 0.0);
-      double reconstruction_seconds = 0;
+      double check_seconds = 0, reconstruction_seconds = 0;
       ThinWall thin;
       std::atomic<bool> abandoned{false};
       const Progress worker = [&abandoned](const std::string&, double) { return !abandoned.load(); };
+      std::vector<DeferredCheck> to_check;
+      to_check.swap(checks);  // all solids' checks with the first solid's triangulation
       std::shared_future<Umbrellas> umbrellas =
-          std::async(std::launch::async, [&s = sampled[i], &reconstruction_seconds, &thin, &worker, spacing,
-                                          wedges = convex_face_pairs(features[i])] {
-            const auto start = Clock::now();
+          std::async(std::launch::async, [&s = sampled[i], &check_seconds, &reconstruction_seconds, &thin, &worker,
+                                          spacing, wedges = convex_face_pairs(features[i]), &to_check] {
+            auto start = Clock::now();
+            run_deferred_checks(to_check);
+            check_seconds = seconds_since(start);
+            start = Clock::now();
             Umbrellas u = reconstruct_faces(s.samples, worker);
             reconstruction_seconds = seconds_since(start);
             // One thread: the triangulation has the other core.
@@ -313,8 +331,26 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt.
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9));
       MedialAxisStats ms;
-      MedialMesh mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, sub);
+      MedialMesh mesh;
+      try {
+        mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, sub);
+      } catch (const Cancelled&) {
+        throw;
+      } catch (...) {
+        // As above: the solid's check, if it refuses the solid, says why better. The worker
+        // skips what follows the check.
+        abandoned = true;
+        umbrellas.wait();
+        try {
+          umbrellas.get();
+        } catch (const InvalidInput&) {
+          throw;
+        } catch (...) {
+        }
+        throw;
+      }
       warn_of_thin_walls(thin, sampled[i].field, i, n, ss, stats.warnings);
+      if (!to_check.empty()) add_timing(stats.timings, "check", check_seconds);
       add_timing(stats.timings, "reconstruction", reconstruction_seconds);
       for (const auto& [stage, s] : ms.timings) add_timing(stats.timings, stage, s);
       ss.vertices = mesh.num_vertices();

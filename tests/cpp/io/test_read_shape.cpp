@@ -30,6 +30,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/pipeline/compute_medial_axis.h"
 #include "io/io_test_files.h"
 
 namespace cadmedial {
@@ -354,6 +355,27 @@ TEST(ExtractSolids, BRepCheckFailureNamesTheSubShape) {
   const std::string why = refusal([&] { extract_solids(shape); });
   EXPECT_CONTAINS(why, "solid 1: ");
   EXPECT_CONTAINS(why, "is invalid (BRepCheck_");
+}
+
+// The pipeline defers BRepCheck to its second thread: the solid comes out unchecked, and the
+// deferred check refuses it with the eager one's words; the pipeline as a whole refuses it too.
+TEST(ExtractSolids, DeferredBRepCheckRefusesAsTheEagerOne) {
+  const TopoDS_Shape shape = BRepPrimAPI_MakeBox(1, 1, 1).Shape();
+  const TopoDS_Vertex v = TopoDS::Vertex(TopExp_Explorer(shape, TopAbs_VERTEX).Current());
+  BRep_Builder().UpdateVertex(v, BRep_Tool::Pnt(v).Translated(gp_Vec(3e-7, 2e-7, 1e-7)), 1e-7);
+  const std::string eager = refusal([&] { extract_solids(shape); });
+  std::vector<DeferredCheck> checks;
+  EXPECT_EQ(extract_solids(shape, nullptr, checks).size(), 1u);
+  ASSERT_EQ(checks.size(), 1u);
+  EXPECT_EQ(refusal([&] { run_deferred_checks(checks); }), eager);
+  ComputeParams params;
+  params.sampling.target_samples = 2000;
+  EXPECT_EQ(refusal([&] { compute_medial_axis(shape, params); }), eager);
+  // A valid solid passes its deferred check.
+  checks.clear();
+  extract_solids(BRepPrimAPI_MakeBox(1, 2, 3).Shape(), nullptr, checks);
+  ASSERT_EQ(checks.size(), 1u);
+  EXPECT_NO_THROW(run_deferred_checks(checks));
 }
 
 TEST(ExtractSolids, VertexFarFromItsCurveEndsIsRefusedBeforeBRepCheck) {
