@@ -1,9 +1,5 @@
 #include "inner_axis.h"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -66,33 +62,50 @@ int find_root(std::vector<int>& parent, int x) {
 // the void (with the other facets at that vertex). Samples whose cell is open are left alone.
 void open_closed_sample_cells(const MedialComplex& mc, const Samples& samples, std::vector<std::uint8_t>& label) {
   const std::size_t ns = samples.size(), nc = mc.num_cells();
-  std::vector<char> open(ns, 0);
-  std::vector<int> farthest(ns, -1);
-  std::vector<double> best(ns, 0.0);
-  for (std::size_t id = 0; id < nc; ++id) {
-    const auto& cs = mc.cell_samples[id];
-    // Merged cells (coincident circumcentres) are labelled through their representative.
-    const int r = mc.rep.empty() ? static_cast<int>(id) : mc.rep[id];
-    for (int j = 0; j < 4; ++j) {
-      const int s = cs[j];
-      // A sample on the hull has an unbounded Voronoi cell: open already.
-      if (!label[r] || mc.cell_neighbors[id][j] < 0) {
-        if (!label[r]) open[s] = 1;
-        if (mc.cell_neighbors[id][j] < 0)
-          for (int k = 0; k < 4; ++k)
-            if (k != j) open[cs[k]] = 1;
-        continue;
+  struct PerSample {
+    std::vector<char> open;
+    std::vector<int> farthest;
+    std::vector<double> best;
+  } half[2];
+  // Half the cells on each core, each with its own per-sample answers; merged below so that the
+  // farthest vertex is the one a single pass in id order finds (the first of equals).
+  on_two_halves(nc, [&](int part, std::size_t begin, std::size_t end) {
+    std::vector<char>& open = half[part].open;
+    std::vector<int>& farthest = half[part].farthest;
+    std::vector<double>& best = half[part].best;
+    open.assign(ns, 0);
+    farthest.assign(ns, -1);
+    best.assign(ns, 0.0);
+    for (std::size_t id = begin; id < end; ++id) {
+      const auto& cs = mc.cell_samples[id];
+      // Merged cells (coincident circumcentres) are labelled through their representative.
+      const int r = mc.rep.empty() ? static_cast<int>(id) : mc.rep[id];
+      for (int j = 0; j < 4; ++j) {
+        const int s = cs[j];
+        // A sample on the hull has an unbounded Voronoi cell: open already.
+        if (!label[r] || mc.cell_neighbors[id][j] < 0) {
+          if (!label[r]) open[s] = 1;
+          if (mc.cell_neighbors[id][j] < 0)
+            for (int k = 0; k < 4; ++k)
+              if (k != j) open[cs[k]] = 1;
+          continue;
+        }
+        Point3 d = samples.normal[s];
+        const SampleTag tag = samples.tag[s];
+        if (tag == SampleTag::Edge || tag == SampleTag::Ball)
+          for (int k = 0; k < 3; ++k) d[k] += samples.normal2[s][k];
+        const double along = dot(sub(mc.centers[r], samples.points[s]), d);
+        if (farthest[s] < 0 || along > best[s]) farthest[s] = r, best[s] = along;
       }
-      Point3 d = samples.normal[s];
-      const SampleTag tag = samples.tag[s];
-      if (tag == SampleTag::Edge || tag == SampleTag::Ball)
-        for (int k = 0; k < 3; ++k) d[k] += samples.normal2[s][k];
-      const double along = dot(sub(mc.centers[r], samples.points[s]), d);
-      if (farthest[s] < 0 || along > best[s]) farthest[s] = r, best[s] = along;
     }
+  }, 1 << 14);
+  const PerSample &lo = half[0], &hi = half[1];
+  for (std::size_t s = 0; s < ns; ++s) {
+    const bool upper = hi.farthest[s] >= 0 && (lo.farthest[s] < 0 || hi.best[s] > lo.best[s]);
+    const int farthest = upper ? hi.farthest[s] : lo.farthest[s];
+    const double best = upper ? hi.best[s] : lo.best[s];
+    if (!lo.open[s] && !hi.open[s] && farthest >= 0 && best > 0) label[farthest] = 0;
   }
-  for (std::size_t s = 0; s < ns; ++s)
-    if (!open[s] && farthest[s] >= 0 && best[s] > 0) label[farthest[s]] = 0;
 }
 
 // Near a sharp convex edge (a dihedral angle under about 45 degrees) the sheet that bisects the
@@ -124,45 +137,53 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
   // Only straddling vertices are joined: a group with any other outside vertex stays outside (it
   // fails the test below either way), and the outer axis, one large group otherwise, took as long
   // as the rest of the stage (CTC 01 at 66k samples).
-  std::vector<std::int8_t> straddling(nc, -1);
-  auto joins = [&](int node) {
-    if (!outside(node)) return false;
-    if (straddling[node] < 0) straddling[node] = straddles(node) ? 1 : 0;
-    return straddling[node] == 1;
-  };
+  std::vector<std::uint8_t> straddling(nc);
+  on_two_halves(nc, [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c) straddling[c] = outside(static_cast<int>(c)) && straddles(static_cast<int>(c));
+  }, 1 << 14);
+  auto joins = [&](int node) { return node >= 0 && straddling[node]; };
+  // The selected facets with a straddling corner (most of the outer axis's have none: they
+  // belong to no group that can go inside), and their sides that join two, half the facets on
+  // each core; the second half's lists follow the first's, in facet order.
+  struct Found {
+    std::vector<int> faces;
+    std::vector<std::pair<int, int>> sides;
+  } half[2];
+  on_two_halves(nf, [&](int part, std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f) {
+      if (!selected(f)) continue;
+      const int b = mc.start[f], e = mc.start[f + 1];
+      bool straddled = false;
+      for (int k = b; k < e; ++k) {
+        const int x = mc.nodes[k], y = mc.nodes[k + 1 < e ? k + 1 : b];
+        if (!joins(x)) continue;
+        straddled = true;
+        if (joins(y)) half[part].sides.push_back({x, y});
+      }
+      if (straddled) half[part].faces.push_back(static_cast<int>(f));
+    }
+  }, 1 << 14);
   std::vector<int> parent(nc);
   std::iota(parent.begin(), parent.end(), 0);
-  for (std::size_t f = 0; f < nf; ++f) {
-    if (!selected(f)) continue;
-    const int b = mc.start[f], e = mc.start[f + 1];
-    for (int k = b; k < e; ++k) {
-      const int x = mc.nodes[k], y = mc.nodes[k + 1 < e ? k + 1 : b];
-      if (joins(x) && joins(y)) parent[find_root(parent, x)] = find_root(parent, y);
-    }
-  }
+  for (const Found& found : half)
+    for (const auto& [x, y] : found.sides) parent[find_root(parent, x)] = find_root(parent, y);
   // Per group (its root): the selected facets with an outside corner; a facet with corners in two
   // groups spoils both.
   std::vector<std::pair<int, int>> group_face;
   std::vector<char> spoiled(nc, 0);
-  for (std::size_t f = 0; f < nf; ++f) {
-    if (!selected(f)) continue;
-    // A facet without a straddling corner belongs to no group that can go inside (most of the
-    // outer axis's facets): leave it out.
-    bool straddled = false;
-    for (int k = mc.start[f]; k < mc.start[f + 1] && !straddled; ++k) straddled = joins(mc.nodes[k]);
-    if (!straddled) continue;
-    int root = -1;
-    bool two = false;
-    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
-      if (!outside(mc.nodes[k])) continue;
-      const int r = find_root(parent, mc.nodes[k]);
-      if (root >= 0 && r != root) two = true, spoiled[r] = 1;
-      root = r;
+  for (const Found& found : half)
+    for (const int f : found.faces) {
+      int root = -1;
+      bool two = false;
+      for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
+        if (!outside(mc.nodes[k])) continue;
+        const int r = find_root(parent, mc.nodes[k]);
+        if (root >= 0 && r != root) two = true, spoiled[r] = 1;
+        root = r;
+      }
+      if (two) spoiled[root] = 1;
+      group_face.push_back({root, f});
     }
-    if (root < 0) continue;
-    if (two) spoiled[root] = 1;
-    group_face.push_back({root, static_cast<int>(f)});
-  }
   std::sort(group_face.begin(), group_face.end());
   std::unordered_map<std::uint64_t, int> side_count;
   std::vector<int> members;
@@ -188,7 +209,7 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
       members.erase(std::unique(members.begin(), members.end()), members.end());
       bool disk = true;
       for (const auto& [key, count] : side_count) disk = disk && count == 2;
-      for (int x : members) disk = disk && straddles(x);
+      for (int x : members) disk = disk && straddling[x];
       const long euler = static_cast<long>(members.size()) - static_cast<long>(side_count.size()) +
                          static_cast<long>(end - g);
       if (disk && euler == 1) {
@@ -235,26 +256,15 @@ class ReconstructionSide {
     for (const auto& t : u.triangles) tris_.emplace_back(point(t[0]), point(t[1]), point(t[2]));
   }
 
-  /// Against the whole mesh (an AABB tree, built on first use).
-  int side(const Point3& x) {
-    if (tris_.empty()) return -1;
-    if (tree_.empty()) {
-      tree_.insert(tris_.begin(), tris_.end());
-      tree_.accelerate_distance_queries();
-    }
-    const K::Point_3 q(x[0], x[1], x[2]);
-    const auto [closest, it] = tree_.closest_point_and_primitive(q);
-    return side_of(q, closest, static_cast<std::size_t>(it - tris_.begin()));
-  }
-
   /// Against the umbrellas of the given samples only: the nearest samples of a Voronoi vertex are
-  /// its cell's, so the nearest mesh point is nearly always on their triangles, and this skips
-  /// the tree search, which is slow for points equidistant from much of the surface (the core
-  /// circle of a torus).
+  /// its cell's, so the nearest mesh point is nearly always on their triangles. (A search of the
+  /// whole mesh for the rest settled 5 of 339 such vertices over the 31 parts of
+  /// ../shared/data/models at 20k samples, for 0.03-0.1 s of tree building each time: they go to
+  /// the exact classifier instead, at a millisecond each.)
   int side_near(const Point3& x, const std::array<int, 4>& near) const {
     const K::Point_3 q(x[0], x[1], x[2]);
     double best = std::numeric_limits<double>::infinity();
-    K::Point_3 closest;
+    K::Point_3 closest(0, 0, 0);
     std::size_t best_t = 0;
     const auto project = K().construct_projected_point_3_object();
     for (int v : near)
@@ -339,12 +349,9 @@ class ReconstructionSide {
   }
 
   K::Point_3 point(int i) const { return {s_.points[i][0], s_.points[i][1], s_.points[i][2]}; }
-  using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
   const Samples& s_;
   const Umbrellas& u_;
   std::vector<K::Triangle_3> tris_;
-  Tree tree_;
 };
 
 // Faces by their sorted corners, each with the index of the first face that had them: open
@@ -664,18 +671,15 @@ std::vector<std::uint8_t> label_inside(MedialComplex& mc, const Samples& samples
       });
   unsure.insert(unsure.end(), unsure_upper.begin(), unsure_upper.end());
   if (!unsure.empty()) {
-    // Then the reconstruction mesh near the cell's samples, then all of it; what it cannot settle
-    // goes to the exact B-rep classifier.
+    // Then the reconstruction mesh near the cell's samples; what it cannot settle goes to the
+    // exact B-rep classifier.
     std::vector<int> still;
     for (size_t k = 0; k < unsure.size(); ++k) {
       if (k % 16384 == 0) report(progress, "inner", 0.4 + 0.1 * static_cast<double>(k) / unsure.size());
       const int id = unsure[k];
       std::array<int, 4> near;
       for (int j = 0; j < 4; ++j) near[j] = mc.cell_samples[id][j];
-      int side = mesh->side_near(mc.centers[id], near);
-      // Within the sag of the cell's own triangles is within the sag of the mesh: the whole mesh
-      // (its tree costs 0.1 s to build at 65k samples) could not tell either.
-      if (side == -1 && used[id] == 2) side = mesh->side(mc.centers[id]);
+      const int side = mesh->side_near(mc.centers[id], near);
       if (side >= 0)
         label[id] = static_cast<std::uint8_t>(side);
       else if (used[id] == 2)
