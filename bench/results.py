@@ -336,7 +336,9 @@ def write_page(a, recs, plain, meta, sweeps, speed, speed_err, paper, paper_err,
   side (outward normals: each face's triangles are turned to agree with FreeCAD's `normalAt`);
   every other vertex, and all of them for a part of several solids, by OpenCASCADE's solid
   classifier (tolerance 1e-6 of the diagonal, boundary counts as inside; the same classifier as
-  FreeCAD's `isInside`, built once per solid). The "classifier" column counts the latter.
+  FreeCAD's `isInside`, built once per solid; a vertex it calls outside that lies within that
+  tolerance of a solid is on the boundary: it misses such points next to an edge once the solid
+  carries a tessellation). The "classifier" column counts the latter.
 - **Parts**: STEP, IGES and BREP files read by FreeCAD (IGES faces sewn into solids, as the
   engine does); FCStd documents opened with PartDesign loaded, their solid being the top-level
   objects' (a Body's tip).
