@@ -310,9 +310,13 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       const Progress worker = [&abandoned](const std::string&, double) { return !abandoned.load(); };
       std::vector<DeferredCheck> to_check;
       to_check.swap(checks);  // all solids' checks with the first solid's triangulation
+      // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt; its
+      // classifiers are made ready on the worker too.
+      std::function<void()> prepare_inside;
+      const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9), prepare_inside);
       std::shared_future<Umbrellas> umbrellas =
           std::async(std::launch::async, [&s = sampled[i], &check_seconds, &reconstruction_seconds, &thin, &worker,
-                                          spacing, wedges = convex_face_pairs(features[i]), &to_check] {
+                                          spacing, wedges = convex_face_pairs(features[i]), &to_check, &prepare_inside, &abandoned] {
             auto start = Clock::now();
             run_deferred_checks(to_check);
             check_seconds = seconds_since(start);
@@ -321,6 +325,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
             reconstruction_seconds = seconds_since(start);
             // One thread: the triangulation has the other core.
             thin = s.thin ? *s.thin : thinnest_wall(s.samples, spacing, wedges, worker, 1);
+            if (!abandoned) prepare_inside();
             return u;
           }).share();
       const struct Abandon {
@@ -328,8 +333,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         ~Abandon() { flag = true; }
       } abandon_on_exit{abandoned};
 
-      // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt.
-      const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9));
+
       MedialAxisStats ms;
       MedialMesh mesh;
       try {
