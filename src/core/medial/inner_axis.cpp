@@ -139,7 +139,10 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
   // as the rest of the stage (CTC 01 at 66k samples).
   std::vector<std::uint8_t> straddling(nc);
   on_two_halves(nc, [&](int, std::size_t begin, std::size_t end) {
-    for (std::size_t c = begin; c < end; ++c) straddling[c] = outside(static_cast<int>(c)) && straddles(static_cast<int>(c));
+    for (std::size_t c = begin; c < end; ++c) {
+      const int cell = static_cast<int>(c);
+      straddling[c] = outside(cell) && straddles(cell);
+    }
   }, 1 << 14);
   auto joins = [&](int node) { return node >= 0 && straddling[node]; };
   // The selected facets with a straddling corner (most of the outer axis's have none: they

@@ -316,7 +316,8 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9), prepare_inside);
       std::shared_future<Umbrellas> umbrellas =
           std::async(std::launch::async, [&s = sampled[i], &check_seconds, &reconstruction_seconds, &thin, &worker,
-                                          spacing, wedges = convex_face_pairs(features[i]), &to_check, &prepare_inside, &abandoned] {
+                                          spacing, wedges = convex_face_pairs(features[i]), &to_check,
+                                          &prepare_inside, &abandoned] {
             auto start = Clock::now();
             run_deferred_checks(to_check);
             check_seconds = seconds_since(start);
@@ -332,7 +333,6 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         std::atomic<bool>& flag;
         ~Abandon() { flag = true; }
       } abandon_on_exit{abandoned};
-
 
       MedialAxisStats ms;
       MedialMesh mesh;
