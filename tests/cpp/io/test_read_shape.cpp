@@ -371,6 +371,15 @@ TEST(ExtractSolids, DeferredBRepCheckRefusesAsTheEagerOne) {
   ComputeParams params;
   params.sampling.target_samples = 2000;
   EXPECT_EQ(refusal([&] { compute_medial_axis(shape, params); }), eager);
+  // In a compound the first solid's triangulation checks them all: the second one is refused.
+  BRep_Builder b;
+  TopoDS_Compound two;
+  b.MakeCompound(two);
+  b.Add(two, BRepPrimAPI_MakeBox(gp_Pnt(5, 0, 0), 1, 2, 3).Shape());
+  b.Add(two, shape);
+  const std::string second = refusal([&] { extract_solids(two); });
+  EXPECT_CONTAINS(second, "solid 2: ");
+  EXPECT_EQ(refusal([&] { compute_medial_axis(two, params); }), second);
   // A valid solid passes its deferred check.
   checks.clear();
   extract_solids(BRepPrimAPI_MakeBox(1, 2, 3).Shape(), nullptr, checks);
