@@ -314,10 +314,17 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       // classifiers are made ready on the worker too.
       std::function<void()> prepare_inside;
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9), prepare_inside);
+      // The selection starts once the triangulation is done, and then waits for this worker: the
+      // classifiers are left to the first points asked (on two cores) rather than make it wait.
+      std::atomic<bool> triangulated{false};
+      const Progress stages = [&sub, &triangulated](const std::string& stage, double f) {
+        if (stage == "selection") triangulated = true;
+        return sub ? sub(stage, f) : true;
+      };
       std::shared_future<Umbrellas> umbrellas =
           std::async(std::launch::async, [&s = sampled[i], &check_seconds, &reconstruction_seconds, &thin, &worker,
                                           spacing, wedges = convex_face_pairs(features[i]), &to_check,
-                                          &prepare_inside, &abandoned] {
+                                          &prepare_inside, &abandoned, &triangulated] {
             auto start = Clock::now();
             run_deferred_checks(to_check);
             check_seconds = seconds_since(start);
@@ -326,7 +333,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
             reconstruction_seconds = seconds_since(start);
             // One thread: the triangulation has the other core.
             thin = s.thin ? *s.thin : thinnest_wall(s.samples, spacing, wedges, worker, 1);
-            if (!abandoned) prepare_inside();
+            if (!abandoned && !triangulated) prepare_inside();
             return u;
           }).share();
       const struct Abandon {
@@ -337,7 +344,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       MedialAxisStats ms;
       MedialMesh mesh;
       try {
-        mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, sub);
+        mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, stages);
       } catch (const Cancelled&) {
         throw;
       } catch (...) {
