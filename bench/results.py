@@ -492,14 +492,14 @@ def write_page(a, recs, plain, meta, sweeps, speed, speed_err, paper, paper_err,
         for s in rows:
             out.append([s.get("target"), s.get("samples"), f(s.get("bare_delaunay")),
                         f(s.get("total")), f(s["total"] / s["bare_delaunay"]) if s.get("bare_delaunay") else "n/a",
-                        s.get("vertices"), s.get("faces")])
+                        f(s.get("median_try_ratio")), s.get("vertices"), s.get("faces")])
         return out
     L.append("## Speed: the pipeline beside CGAL's bare Delaunay (`build/bench_pipeline`)\n")
     L.append("On %s (one solid), run sequentially after the parts." % SPEED_PART)
     if speed:
         L.append("")
         L.append(table(["target", "samples", "bare Delaunay s", "pipeline total s", "total / bare",
-                        "vertices", "faces"], speed_rows(speed)))
+                        "per try (median of total / bare within a try)", "vertices", "faces"], speed_rows(speed)))
     else:
         L.append("\nbench_pipeline failed: %s" % speed_err)
     L.append("")
