@@ -399,6 +399,8 @@ def write_page(a, recs, plain, meta, sweeps, speed, speed_err, paper, paper_err,
             if k not in stages:
                 stages.append(k)
     L.append("### Time per stage (s)\n")
+    L.append("\"check\" (OpenCASCADE's validity check) and \"reconstruction\" run on a second thread "
+             "during \"delaunay\"; \"total\" is the wall-clock time of the whole computation.\n")
     L.append(table(["part"] + stages, [[r["name"]] + [f(timing(r, s)) for s in stages] for r in ok]))
     L.append("")
 
