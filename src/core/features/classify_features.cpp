@@ -62,6 +62,14 @@ std::array<double, 4> uv_bounds(const TopoDS_Face& face) {
 
 }  // namespace
 
+std::array<double, 4> uv_bounds_of(const Features& features, int fi) {
+  if (fi < static_cast<int>(features.face_uv_bounds.size()) && !std::isnan(features.face_uv_bounds[fi][0]))
+    return features.face_uv_bounds[fi];
+  std::array<double, 4> b{};
+  BRepTools::UVBounds(TopoDS::Face(features.faces(fi + 1)), b[0], b[1], b[2], b[3]);
+  return b;
+}
+
 EdgeGeometry::EdgeGeometry(const Features& features, int edge_index) : smooth_angle_deg_(features.smooth_angle_deg) {
   const TopoDS_Edge& edge = TopoDS::Edge(features.edges(edge_index + 1));
   double first = 0, last = 0;

@@ -65,6 +65,10 @@ struct Features {
   std::vector<std::shared_ptr<const EdgeGeometry>> edge_geometry;
 };
 
+/// Face fi's (0-based) parameter bounds (u0, u1, v0, v1): the classification's, or
+/// BRepTools::UVBounds now where it has none (it throws where it failed then too).
+std::array<double, 4> uv_bounds_of(const Features& features, int fi);
+
 /// Classifies every edge from normals at several points along it (ends and interior), and every
 /// vertex: a vertex is a non-concave corner when the inner medial axis reaches it, that is when
 /// the solid's exterior near it does not fit in a half-space: it has an incident edge that is

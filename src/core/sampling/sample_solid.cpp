@@ -562,15 +562,9 @@ class Sampler {
   const FacePlan& face_plan(int fi) {
     if (plans_[fi]) return *plans_[fi];
     FacePlan plan;
-    const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
     const BRepAdaptor_Surface& surf = surface(fi);
-    double u0, u1, v0, v1;
-    if (fi < static_cast<int>(f_.face_uv_bounds.size()) && !std::isnan(f_.face_uv_bounds[fi][0])) {
-      const std::array<double, 4>& b = f_.face_uv_bounds[fi];
-      u0 = b[0], u1 = b[1], v0 = b[2], v1 = b[3];
-    } else {
-      BRepTools::UVBounds(face, u0, u1, v0, v1);  // throws where the classification's failed
-    }
+    const std::array<double, 4> b = uv_bounds_of(f_, fi);
+    const double u0 = b[0], u1 = b[1], v0 = b[2], v1 = b[3];
     const bool planar = surf.GetType() == GeomAbs_Plane;
     // Probe the metric and curvature.
     constexpr int kProbe = 12;
@@ -836,15 +830,8 @@ SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) 
     BRepAdaptor_Surface surf(face, Standard_False);
     double kappa = 0;
     if (surf.GetType() != GeomAbs_Plane) {
-      double u0, u1, v0, v1;
-      // The bounds the classification found, where it could.
-      const bool known = fi - 1 < static_cast<int>(features.face_uv_bounds.size()) && !std::isnan(features.face_uv_bounds[fi - 1][0]);
-      if (known) {
-        const std::array<double, 4>& b = features.face_uv_bounds[fi - 1];
-        u0 = b[0], u1 = b[1], v0 = b[2], v1 = b[3];
-      } else {
-        BRepTools::UVBounds(face, u0, u1, v0, v1);
-      }
+      const std::array<double, 4> b = uv_bounds_of(features, fi - 1);
+      const double u0 = b[0], u1 = b[1], v0 = b[2], v1 = b[3];
       BRepLProp_SLProps sl(surf, 2, 1e-9);
       int n = 0;
       for (int i = 0; i < 6; ++i)
