@@ -399,8 +399,10 @@ def write_page(a, recs, plain, meta, sweeps, speed, speed_err, paper, paper_err,
             if k not in stages:
                 stages.append(k)
     L.append("### Time per stage (s)\n")
-    L.append("\"check\" (OpenCASCADE's validity check) and \"reconstruction\" run on a second thread "
-             "during \"delaunay\"; \"total\" is the wall-clock time of the whole computation.\n")
+    L.append("\"check\" (OpenCASCADE's validity check), \"reconstruction\" and \"walls\" (the "
+             "thin-wall check of a sampling that it leaves as it is) run on a second thread during "
+             "\"delaunay\"; a check that refines the sampling counts as \"sampling\". \"total\" is "
+             "the wall-clock time of the whole computation.\n")
     L.append(table(["part"] + stages, [[r["name"]] + [f(timing(r, s)) for s in stages] for r in ok]))
     L.append("")
 

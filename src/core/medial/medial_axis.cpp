@@ -30,16 +30,18 @@ namespace {
 
 MedialMesh medial_axis_after(const Samples& samples, const std::function<const Umbrellas&()>& wait_for_umbrellas,
                              const MedialParams& params, const InsideTest& inside, int solid_index,
-                             MedialAxisStats* stats_out, const Progress& progress) {
+                             MedialAxisStats* stats_out, const Progress& progress,
+                             const std::atomic<bool>* give_up) {
   MedialAxisStats st;
   auto t0 = Clock::now();
   Delaunay dt;
   std::vector<Vertex> handle;
   std::vector<int> rank;
-  triangulate(samples, dt, handle, rank, progress, "delaunay");
+  triangulate(samples, dt, handle, rank, progress, "delaunay", give_up);
   st.timings.push_back({"delaunay", seconds_since(t0)});
   report(progress, "selection", 0.0);
   const Umbrellas& umbrellas = wait_for_umbrellas();
+  if (give_up && give_up->load()) throw Cancelled();
 
   t0 = Clock::now();
   const Umbrellas pole_umbrellas = params.plain_medial ? umbrellas_from_poles(dt, samples.size()) : Umbrellas();
@@ -106,13 +108,14 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
 MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const MedialParams& params,
                        const InsideTest& inside, int solid_index, MedialAxisStats* stats, const Progress& progress) {
   return medial_axis_after(samples, [&]() -> const Umbrellas& { return umbrellas; }, params, inside, solid_index,
-                           stats, progress);
+                           stats, progress, nullptr);
 }
 
 MedialMesh medial_axis(const Samples& samples, std::shared_future<Umbrellas> umbrellas, const MedialParams& params,
-                       const InsideTest& inside, int solid_index, MedialAxisStats* stats, const Progress& progress) {
+                       const InsideTest& inside, int solid_index, MedialAxisStats* stats, const Progress& progress,
+                       const std::atomic<bool>* give_up) {
   return medial_axis_after(samples, [&]() -> const Umbrellas& { return umbrellas.get(); }, params, inside,
-                           solid_index, stats, progress);
+                           solid_index, stats, progress, give_up);
 }
 
 double bare_delaunay_seconds(const std::vector<Point3>& points) {

@@ -3,6 +3,7 @@
 // (4.2.3) and the inner medial axis (4.2.5). CGAL types stay inside medial/*.cpp.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <future>
@@ -40,10 +41,12 @@ MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const
                        const Progress& progress = {});
 
 /// The same with the umbrellas still being computed on another thread: the Delaunay triangulation
-/// does not need them, so compute_medial_axis reconstructs the faces meanwhile (2 cores).
+/// does not need them, so compute_medial_axis reconstructs the faces meanwhile (2 cores). When
+/// that thread sets `give_up` (the samples must change), this throws Cancelled soon: during the
+/// triangulation, or once the umbrellas are ready.
 MedialMesh medial_axis(const Samples& samples, std::shared_future<Umbrellas> umbrellas, const MedialParams& params,
                        const InsideTest& inside, int solid_index, MedialAxisStats* stats = nullptr,
-                       const Progress& progress = {});
+                       const Progress& progress = {}, const std::atomic<bool>* give_up = nullptr);
 
 /// Seconds for CGAL's Delaunay triangulation of these points alone (the benchmark's yardstick).
 double bare_delaunay_seconds(const std::vector<Point3>& points);

@@ -9,7 +9,7 @@
 namespace cadmedial::internal {
 
 void triangulate(const Samples& samples, Delaunay& dt, std::vector<Vertex>& handle, std::vector<int>& rank,
-                 const Progress& progress, const std::string& stage) {
+                 const Progress& progress, const std::string& stage, const std::atomic<bool>* give_up) {
   handle.assign(samples.size(), Vertex());
   rank.assign(samples.size(), -1);
   // CGAL's spatial sort (Hilbert curve over a BRIO shuffle with its own fixed seed), as its range
@@ -27,6 +27,9 @@ void triangulate(const Samples& samples, Delaunay& dt, std::vector<Vertex>& hand
     rank[i] = static_cast<int>(done);
     // Cancelling must not wait for the whole triangulation (3 s at 250k samples).
     if (++done % 16384 == 0) report(progress, stage, static_cast<double>(done) / order.size());
+    // Giving up (another thread found the samples must change) is checked more often: about
+    // every millisecond.
+    if (give_up && done % 128 == 0 && give_up->load(std::memory_order_relaxed)) throw Cancelled();
     const Vertex v = dt.insert(pts[i], hint == Vertex() ? Cell() : hint->cell());
     // A sample that coincides with another keeps no vertex of its own.
     if (v->info() < 0 || v->info() == static_cast<int>(i)) {

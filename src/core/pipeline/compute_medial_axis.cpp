@@ -136,26 +136,61 @@ struct SolidSampling {
   SpacingField field{1.0};  ///< uniform, or finer at thin walls
   /// The thinnest wall, when the first pass's answer is final (nothing was refined).
   std::optional<ThinWall> thin;
+  /// The thin-wall check of the uniform sampling is still to run (compute_medial_axis runs it
+  /// beside the triangulation).
+  bool walls_pending = false;
 };
+
+// Per sample of a uniform sampling, half the thickness of a wall thinner than the spacing.
+// Wedges of more than about 18 degrees are sampled finer near their edge too (tail_turbine's
+// 43-degree edges had holes in the sheet there); sharper ones would only hit the floor.
+std::vector<double> radii_of_thin_walls(const Samples& samples, const Features& features, double spacing,
+                                        const Progress& progress, int threads) {
+  return wall_radii(samples, spacing, convex_face_pairs(features), kSharpWedgeDot, progress, threads);
+}
+
+// Whether radii_of_thin_walls would find any (it stops at the first).
+bool has_thin_walls(const Samples& samples, const Features& features, double spacing, const Progress& progress) {
+  return any_thin_wall(samples, spacing, convex_face_pairs(features), kSharpWedgeDot, progress);
+}
+
+// The spacing there (uniform when no wall is thinner than the spacing), measured on the faces and
+// edges that the sampler refines.
+SpacingField thin_wall_field(const Samples& samples, const Features& features, double spacing,
+                             const std::vector<double>& radii) {
+  SpacingField field = thin_wall_spacing(samples, radii, spacing, kSpacingPerRadius, kMaxRefinement, kGradation);
+  if (!field.is_uniform()) field.measure_on(samples, features.edge_faces);
+  return field;
+}
+
+// The solid sampled again with `field`; or, when it is uniform, the thinnest wall is final.
+void resample_for(SolidSampling& s, SpacingField field, SolidSampler& sampler, const Progress& progress) {
+  s.field = std::move(field);
+  s.walls_pending = false;
+  if (s.field.is_uniform()) {
+    s.thin = ThinWall{};  // no wall thinner than the spacing
+    return;
+  }
+  s.samples = sampler.sample(s.field, progress);
+}
 
 // With a target count, the plan's estimate ignores the extra samples that curved faces take:
 // sample, and rescale the spacing by the square root of the miss until within 15 % (3 passes).
 // Then where walls are thinner than the spacing allows, sample the solid again with a finer
-// local spacing there (the target count is the uniform passes').
-std::vector<SolidSampling> sample_solids(const std::vector<TopoDS_Solid>& solids,
+// local spacing there (the target count is the uniform passes'); or, with `defer_walls`, leave
+// that check to the caller (walls_pending).
+std::vector<SolidSampling> sample_solids(std::vector<std::unique_ptr<SolidSampler>>& samplers,
                                          const std::vector<Features>& features, const SamplingParams& params,
-                                         double& spacing, const Progress& progress) {
+                                         double& spacing, bool defer_walls, const Progress& progress) {
   std::vector<SolidSampling> out;
   const int passes = params.spacing > 0 ? 1 : 3;
   const double target = params.target_samples > 0 ? static_cast<double>(params.target_samples)
                                                    : static_cast<double>(SamplingParams::default_target_samples);
   // One sampler per solid for all passes: what a pass leaves unchanged is not redone.
-  std::vector<std::unique_ptr<SolidSampler>> samplers;
-  for (size_t i = 0; i < solids.size(); ++i) samplers.push_back(std::make_unique<SolidSampler>(solids[i], features[i]));
   for (int pass = 0; pass < passes; ++pass) {
     out.clear();
     double total = 0;
-    for (size_t i = 0; i < solids.size(); ++i) {
+    for (size_t i = 0; i < samplers.size(); ++i) {
       out.push_back({samplers[i]->sample(SpacingField(spacing), progress), SpacingField(spacing), {}});
       total += static_cast<double>(out.back().samples.size());
     }
@@ -164,21 +199,21 @@ std::vector<SolidSampling> sample_solids(const std::vector<TopoDS_Solid>& solids
     spacing *= std::sqrt(miss);
   }
   if (!params.adapt_to_walls) return out;  // the worker finds the thinnest wall for the warning
-  for (size_t i = 0; i < solids.size(); ++i) {
+  for (size_t i = 0; i < samplers.size(); ++i) {
     SolidSampling& s = out[i];
-    // Wedges of more than about 18 degrees are sampled finer near their edge too (tail_turbine's
-    // 43-degree edges had holes in the sheet there); sharper ones would only hit the floor.
-    const std::vector<double> radii =
-        wall_radii(s.samples, spacing, convex_face_pairs(features[i]), kSharpWedgeDot, progress);
-    s.field = thin_wall_spacing(s.samples, radii, spacing, kSpacingPerRadius, kMaxRefinement, kGradation);
-    if (s.field.is_uniform()) {
-      s.thin = ThinWall{};  // no wall thinner than the spacing
-      continue;
-    }
-    s.field.measure_on(s.samples, features[i].edge_faces);
-    s.samples = samplers[i]->sample(s.field, progress);
+    s.walls_pending = true;
+    if (defer_walls) continue;
+    const std::vector<double> radii = radii_of_thin_walls(s.samples, features[i], spacing, progress, 2);
+    resample_for(s, thin_wall_field(s.samples, features[i], spacing, radii), *samplers[i], progress);
   }
   return out;
+}
+
+std::vector<std::unique_ptr<SolidSampler>> samplers_for(const std::vector<TopoDS_Solid>& solids,
+                                                        const std::vector<Features>& features) {
+  std::vector<std::unique_ptr<SolidSampler>> samplers;
+  for (size_t i = 0; i < solids.size(); ++i) samplers.push_back(std::make_unique<SolidSampler>(solids[i], features[i]));
+  return samplers;
 }
 
 // Facing walls closer than two (local) spacings: the Voronoi sheet between them is only as good as
@@ -213,7 +248,8 @@ std::vector<SolidSampling> sample_as_computed(const TopoDS_Shape& shape, const S
     std::vector<Features> features;
     for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
     sp = plan(measure(solids, features), params);
-    std::vector<SolidSampling> sampled = sample_solids(solids, features, params, sp.spacing, {});
+    std::vector<std::unique_ptr<SolidSampler>> samplers = samplers_for(solids, features);
+    std::vector<SolidSampling> sampled = sample_solids(samplers, features, params, sp.spacing, false, {});
     sp.estimated_samples = 0;
     for (const SolidSampling& s : sampled) sp.estimated_samples += s.samples.size();
     return sampled;
@@ -257,6 +293,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
     Measure m;
     double spacing = 0;
     std::vector<SolidSampling> sampled;
+    std::vector<std::unique_ptr<SolidSampler>> samplers;
     try {
       t0 = Clock::now();
       report(progress, "features", 0.0);
@@ -270,7 +307,8 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       add_timing(stats.timings, "setup", seconds_since(t0));
 
       t0 = Clock::now();
-      sampled = sample_solids(solids, features, params.sampling, spacing, progress);
+      samplers = samplers_for(solids, features);
+      sampled = sample_solids(samplers, features, params.sampling, spacing, true, progress);
       stats.spacing = spacing;
       add_timing(stats.timings, "sampling", seconds_since(t0));
     } catch (const Cancelled&) {
@@ -295,8 +333,8 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         ss.smooth_edges += k == EdgeKind::Smooth;
       }
       for (bool c : features[i].nonconcave_corner) ss.nonconcave_corners += c;
-      const Samples& samples = sampled[i].samples;
-      ss.samples = samples.size();
+      SolidSampling& sampling = sampled[i];
+      const Samples& samples = sampling.samples;
 
       // The face-by-face reconstruction, then the thin-wall check, run on a second thread while
       // CGAL triangulates (they need only the samples; the selection waits for them); their time
@@ -304,64 +342,102 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       // Python's lock); it checks a flag the main thread sets when it gives up (cancel, error),
       // so the future's destructor, which waits for it, does not wait long.
       report(sub, "reconstruction", 0.0);
-      double check_seconds = 0, reconstruction_seconds = 0;
+      double check_seconds = 0, reconstruction_seconds = 0, walls_seconds = 0;
       ThinWall thin;
-      std::atomic<bool> abandoned{false};
-      const Progress worker = [&abandoned](const std::string&, double) { return !abandoned.load(); };
       std::vector<DeferredCheck> to_check;
       to_check.swap(checks);  // all solids' checks with the first solid's triangulation
+      const bool checks_here = !to_check.empty();
       // The exact B-rep settles the Voronoi vertices that the sample normals leave in doubt; its
       // classifiers are made ready on the worker too.
       std::function<void()> prepare_inside;
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9), prepare_inside);
-      // The selection starts once the triangulation is done, and then waits for this worker: the
-      // classifiers are left to the first points asked (on two cores) rather than make it wait.
-      std::atomic<bool> triangulated{false};
-      const Progress stages = [&sub, &triangulated](const std::string& stage, double f) {
-        if (stage == "selection") triangulated = true;
-        return sub ? sub(stage, f) : true;
-      };
-      std::shared_future<Umbrellas> umbrellas =
-          std::async(std::launch::async, [&s = sampled[i], &check_seconds, &reconstruction_seconds, &thin, &worker,
-                                          spacing, wedges = convex_face_pairs(features[i]), &to_check,
-                                          &prepare_inside, &abandoned, &triangulated] {
-            auto start = Clock::now();
-            run_deferred_checks(to_check);
-            check_seconds = seconds_since(start);
-            start = Clock::now();
-            Umbrellas u = reconstruct_faces(s.samples, worker);
-            reconstruction_seconds = seconds_since(start);
-            // One thread: the triangulation has the other core.
-            thin = s.thin ? *s.thin : thinnest_wall(s.samples, spacing, wedges, worker, 1);
-            if (!abandoned && !triangulated) prepare_inside();
-            return u;
-          }).share();
-      const struct Abandon {
-        std::atomic<bool>& flag;
-        ~Abandon() { flag = true; }
-      } abandon_on_exit{abandoned};
-
       MedialAxisStats ms;
       MedialMesh mesh;
-      try {
-        mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, stages);
-      } catch (const Cancelled&) {
-        throw;
-      } catch (...) {
-        // As above: the solid's check, if it refuses the solid, says why better. The worker
-        // skips what follows the check.
-        abandoned = true;
+      // Twice when the thin-wall check of the uniform sampling, which runs first on the worker,
+      // finds walls to sample finer: the triangulation of the uniform samples is given up.
+      for (;;) {
+        std::atomic<bool> abandoned{false}, resample{false};
+        const Progress worker = [&abandoned](const std::string&, double) { return !abandoned.load(); };
+        // The selection starts once the triangulation is done, and then waits for this worker: the
+        // classifiers are left to the first points asked (on two cores) rather than make it wait.
+        std::atomic<bool> triangulated{false};
+        const Progress stages = [&sub, &triangulated](const std::string& stage, double f) {
+          if (stage == "selection") triangulated = true;
+          return sub ? sub(stage, f) : true;
+        };
+        std::shared_future<Umbrellas> umbrellas =
+            std::async(std::launch::async, [&s = sampling, &f = features[i], &check_seconds, &reconstruction_seconds,
+                                            &walls_seconds, &thin, &worker, spacing, &to_check, &prepare_inside,
+                                            &abandoned, &triangulated, &resample] {
+              auto start = Clock::now();
+              if (s.walls_pending) {
+                // Most parts have no wall this thin at their spacing: looking beside the
+                // triangulation saves the check's time; where one is, the triangulation is given
+                // up as soon as it is found.
+                const bool thin_walls = has_thin_walls(s.samples, f, spacing, worker);
+                walls_seconds += seconds_since(start);
+                if (thin_walls) {
+                  resample = true;
+                  return Umbrellas();
+                }
+                s.field = SpacingField(spacing);
+                s.thin = ThinWall{};  // no wall thinner than the spacing
+                s.walls_pending = false;
+              }
+              start = Clock::now();
+              run_deferred_checks(to_check);
+              to_check.clear();  // done: a second try (after a finer sampling) skips them
+              check_seconds += seconds_since(start);
+              start = Clock::now();
+              Umbrellas u = reconstruct_faces(s.samples, worker);
+              reconstruction_seconds = seconds_since(start);
+              // One thread: the triangulation has the other core.
+              thin = s.thin ? *s.thin : thinnest_wall(s.samples, spacing, convex_face_pairs(f), worker, 1);
+              if (!abandoned && !triangulated) prepare_inside();
+              return u;
+            }).share();
+        const struct Abandon {
+          std::atomic<bool>& flag;
+          ~Abandon() { flag = true; }
+        } abandon_on_exit{abandoned};
+
+        const auto t_try = Clock::now();
+        try {
+          mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, stages, &resample);
+          break;
+        } catch (const Cancelled&) {
+          if (!resample) throw;
+        } catch (...) {
+          // As above: the solid's check, if it refuses the solid, says why better. The worker
+          // skips what follows the check.
+          abandoned = true;
+          umbrellas.wait();
+          try {
+            umbrellas.get();
+          } catch (const InvalidInput&) {
+            throw;
+          } catch (...) {
+          }
+          throw;
+        }
         umbrellas.wait();
         try {
-          umbrellas.get();
-        } catch (const InvalidInput&) {
+          const std::vector<double> radii = radii_of_thin_walls(samples, features[i], spacing, sub, 2);
+          resample_for(sampling, thin_wall_field(samples, features[i], spacing, radii), *samplers[i], sub);
+        } catch (const Cancelled&) {
           throw;
         } catch (...) {
+          run_deferred_checks(to_check);
+          throw;
         }
-        throw;
+        // As when the check ran before the triangulation: it and the finer pass are sampling.
+        add_timing(stats.timings, "sampling", seconds_since(t_try));
       }
+      ss.samples = samples.size();
+      // Beside the kept triangulation, overlapping "delaunay" as "check" and "reconstruction" do.
+      if (walls_seconds > 0 && sampling.field.is_uniform()) add_timing(stats.timings, "walls", walls_seconds);
       warn_of_thin_walls(thin, sampled[i].field, i, n, ss, stats.warnings);
-      if (!to_check.empty()) add_timing(stats.timings, "check", check_seconds);
+      if (checks_here) add_timing(stats.timings, "check", check_seconds);
       add_timing(stats.timings, "reconstruction", reconstruction_seconds);
       for (const auto& [stage, s] : ms.timings) add_timing(stats.timings, stage, s);
       ss.vertices = mesh.num_vertices();

@@ -28,6 +28,10 @@ namespace cadmedial {
 std::vector<double> wall_radii(const Samples& samples, double spacing, const std::vector<std::array<int, 2>>& wedges,
                                double wedge_dot = 1.0, const Progress& progress = {}, int threads = 2);
 
+/// Whether wall_radii would find any wall thinner than the spacing: it stops at the first.
+bool any_thin_wall(const Samples& samples, double spacing, const std::vector<std::array<int, 2>>& wedges,
+                   double wedge_dot = 1.0, const Progress& progress = {});
+
 struct ThinWall {
   double radius = std::numeric_limits<double>::infinity();  ///< the smallest of wall_radii
   Point3 at{0, 0, 0};         ///< the face sample where it was found

@@ -94,5 +94,30 @@ TEST(ThinWalls, AdaptiveSamplingResolvesThinWallsDownToAQuarterOfTheSpacing) {
   EXPECT_EQ(block_adapted.mesh.vertices, block_once.mesh.vertices);
 }
 
+// compute_medial_axis checks the uniform sampling for thin walls beside its triangulation, and
+// gives that triangulation up when it must sample finer; sample_shape (the preview's path) checks
+// first. Both must take the same samples: a plate that is refined, a block that is not, and both
+// in one compound (the plate second, after the block's triangulation is kept).
+TEST(ThinWalls, TheCheckBesideTheTriangulationTakesThePreviewsSamples) {
+  ComputeParams params;
+  params.sampling.spacing = 1.0;
+  const TopoDS_Solid plate = test::make_box(30, 30, 1), block = test::make_box(20, 20, 20);
+  const TopoDS_Shape both = test::make_compound({block, plate});
+  for (const TopoDS_Shape& shape : {TopoDS_Shape(plate), TopoDS_Shape(block), both}) {
+    const std::vector<Samples> preview = sample_shape(shape, params.sampling);
+    const ComputeResult result = compute_medial_axis(shape, params);
+    ASSERT_EQ(result.stats.solids.size(), preview.size());
+    for (std::size_t k = 0; k < preview.size(); ++k) {
+      EXPECT_EQ(result.stats.solids[k].samples, preview[k].size()) << "solid " << k;
+      EXPECT_EQ(result.stats.solids[k].euler_characteristic, 1) << "solid " << k;
+    }
+  }
+  // The plate was refined (about 16 times the samples of its big faces), the block not.
+  ComputeParams uniform = params;
+  uniform.sampling.adapt_to_walls = false;
+  EXPECT_GT(compute_medial_axis(plate, params).stats.samples, 8 * compute_medial_axis(plate, uniform).stats.samples);
+  EXPECT_EQ(compute_medial_axis(block, params).stats.samples, compute_medial_axis(block, uniform).stats.samples);
+}
+
 }  // namespace
 }  // namespace cadmedial
