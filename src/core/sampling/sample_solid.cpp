@@ -148,6 +148,21 @@ class Sampler {
   }
 
  private:
+  // Room for samples up to `size`, with add()'s defaults and `tag`, not in the crowding grid.
+  void grow_to(std::size_t size, SampleTag tag) {
+    out_.points.resize(size);
+    out_.tag.resize(size, tag);
+    out_.normal.resize(size, {0, 0, 0});
+    out_.normal2.resize(size, {0, 0, 0});
+    out_.edge_convex.resize(size, 0);
+    out_.curvature.resize(size, 0.0f);
+    out_.face.resize(size, -1);
+    out_.edge.resize(size, -1);
+    out_.vertex.resize(size, -1);
+    out_.nonconcave.resize(size, 0);
+    exclusion_.resize(size, 0.0);
+  }
+
   int add(const Point3& p, SampleTag tag, double exclusion = 0.0) {
     const int id = static_cast<int>(out_.points.size());
     out_.points.push_back(p);
@@ -509,14 +524,23 @@ class Sampler {
       }
       other.get();
     }
+    // The interiors after the samples placed so far, face by face, written in place: nothing
+    // asks the crowding grid after them, so they are not put in it (with the growing arrays, that
+    // took 56 ms of this loop's 68 ms at 250k samples, on one core; 24 to 35 ms now).
+    std::size_t id = out_.points.size();
+    std::size_t total = id;
+    for (const FaceInterior& in : interiors) total += in.point.size();
+    grow_to(total, SampleTag::Face);
     for (int fi = 0; fi < nf; ++fi) {
       const FaceInterior& in = interiors[fi];
-      for (size_t k = 0; k < in.point.size(); ++k) {
-        const int id = add(in.point[k], SampleTag::Face);
+      auto& points = face_points_[fi];
+      points.reserve(points.size() + in.point.size());
+      for (size_t k = 0; k < in.point.size(); ++k, ++id) {
+        out_.points[id] = in.point[k];
         out_.face[id] = fi;
         out_.normal[id] = in.normal[k];
         out_.curvature[id] = in.curvature[k];
-        face_points_[fi].push_back({id, in.uv[k]});
+        points.push_back({static_cast<int>(id), in.uv[k]});
       }
       build_domain(fi);
     }
