@@ -311,3 +311,48 @@ def convex_edge_points(solids, h, angle_deg=10.0):
                 conv_vertices.add((round(vx.X, 9), round(vx.Y, 9), round(vx.Z, 9)))
         corners.extend(conv_vertices)
     return np.array(pts, float).reshape(-1, 3), np.array(corners, float).reshape(-1, 3), length
+
+
+def exact_wall(solid, at, reported, tol):
+    """Twice the radius of the largest ball in the solid that touches its boundary at `at` (a
+    point on it): the wall's exact thickness there, on the material's side. The balls that touch
+    at `at` from one direction grow along it and nest, so their radius is bisected: a ball is in
+    the solid while its centre's distance to the boundary is its radius. The directions: the
+    inward normal of each face through `at` (two on an edge, as the engine's samples there have)
+    and their mean. `reported`: the engine's thickness there, which bounds the search (twice
+    it). None when `at` is on no face."""
+    import FreeCAD
+    import Part
+    p = FreeCAD.Vector(*at)
+    v = Part.Vertex(p)
+    inward = []
+    for f in solid.Faces:
+        if f.distToShape(v)[0] > tol:
+            continue
+        u, w = f.Surface.parameter(p)
+        n = f.normalAt(u, w)
+        n.normalize()
+        # Inward: the side where a short step stays in the solid.
+        if not solid.isInside(p + n * (1e3 * tol), tol, False):
+            n = -n
+        inward.append(n)
+    if not inward:
+        return None
+    # Distances to the boundary: to a solid, a point inside it is at distance 0.
+    boundary = Part.makeCompound(solid.Shells)
+    if len(inward) > 1:
+        mean = sum(inward, FreeCAD.Vector())
+        if mean.Length > 1e-9:
+            inward.append(mean.normalize())
+    best = 0.0
+    for n in inward:
+        lo, hi = 0.0, 2.0 * reported
+        for _ in range(50):
+            r = 0.5 * (lo + hi)
+            c = p + n * r
+            inside = solid.isInside(c, tol, True) and boundary.distToShape(Part.Vertex(c))[0] >= r * (1 - 1e-7)
+            lo, hi = (r, hi) if inside else (lo, r)
+            if hi - lo <= 1e-6 * reported:
+                break
+        best = max(best, lo)
+    return 2.0 * best

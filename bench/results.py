@@ -474,6 +474,28 @@ def write_page(a, recs, plain, meta, sweeps, speed, speed_err, paper, paper_err,
             L.append("Convex edges reached below 99 %: " + ", ".join(
                 "%s %s" % (r["name"], pct(r["completeness"]["edge_reached"])) for r in lowc) + ".\n")
 
+    warned = [r for r in ok if r["stats"].get("warnings")]
+    if warned:
+        L.append("## Thin-wall warnings against the exact wall\n")
+        L.append("Where the engine warns that walls are thinner than two sample spacings, it names the "
+                 "thinnest (`thinnest_wall`, from its samples' shrinking balls) and where it found it "
+                 "(`thinnest_wall_at`). \"exact\": twice the radius of the largest ball in the solid "
+                 "that touches the boundary at that point (bisected with FreeCAD's `distToShape` to the "
+                 "boundary and `isInside`; on an edge, the largest over its faces' inward normals and "
+                 "their mean). Exact below reported: the wall there is thinner still than the warning "
+                 "says. Above: the engine measured the wall beside the point thinner than at it (near a "
+                 "sharp wedge's edge, where the wedge thins to nothing).\n")
+        rows = []
+        for r in warned:
+            for w in r.get("thin_walls", []):
+                if w["exact"] is None:
+                    continue
+                rows.append([r["name"], w["solid"] + 1, f(r["h"], 3), f(w["reported"], 3), f(w["exact"], 3),
+                             f(w["exact"] / w["reported"], 2) if w["reported"] > 0 else ""])
+        L.append(table(["part", "solid", "h", "reported thickness", "exact thickness there",
+                        "exact / reported"], rows))
+        L.append("")
+
     L.append("## Density sweep (the paper's Figure 12)\n")
     if sweeps:
         L.append("![density sweep](img/results_density_sweep.png)\n")

@@ -205,6 +205,17 @@ def main():
         frac, n, exact = measures.leakage(solids, V, 1e-6 * diag, surface=surface)
         rec["leakage"] = {"outside_fraction": frac, "tested": n, "classifier": exact}
         tm["topology_leakage"] = time.time() - t
+        # The thinnest wall the engine reports, against the exact wall where it found it.
+        t = time.time()
+        walls = []
+        for s, ss in enumerate(st.get("solids", [])):
+            at, reported = ss.get("thinnest_wall_at"), ss.get("thinnest_wall")
+            if at is None or reported is None or s >= len(solids):
+                continue
+            walls.append({"solid": s, "reported": reported,
+                          "exact": measures.exact_wall(solids[s], at, reported, 1e-7 * diag)})
+        rec["thin_walls"] = walls
+        tm["thin_walls"] = time.time() - t
     if a.mesh:
         np.savez_compressed(a.mesh, V=V, R=R, T=T3, P=P, Tp=T)
     rec["wall_total"] = time.time() - t0

@@ -223,6 +223,7 @@ std::vector<std::unique_ptr<SolidSampler>> samplers_for(const std::vector<TopoDS
 void warn_of_thin_walls(const ThinWall& w, const SpacingField& field, int solid, int solids, SolidStats& ss,
                         std::vector<std::string>& warnings) {
   ss.thinnest_wall = 2.0 * w.radius;
+  ss.thinnest_wall_at = w.at;
   const double local = field.at(w.at);
   if (!(w.radius < local)) return;
   const bool adapted = !field.is_uniform();

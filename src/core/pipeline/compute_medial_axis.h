@@ -31,6 +31,8 @@ struct SolidStats {
   /// Thickness of the thinnest wall the samples show (thinnest_wall), if under 2 spacings, else
   /// infinity.
   double thinnest_wall = 0.0;
+  /// The face sample where it was found (meaningless when thinnest_wall is infinite).
+  Point3 thinnest_wall_at{0, 0, 0};
   std::size_t exact_inside_tests = 0;  ///< Voronoi vertices the B-rep classifier had to settle
 };
 

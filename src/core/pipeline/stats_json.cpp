@@ -78,6 +78,12 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"euler_characteristic\": " + std::to_string(s.euler_characteristic);
     j += ", \"exact_inside_tests\": " + std::to_string(s.exact_inside_tests);
     j += ", \"thinnest_wall\": " + number(s.thinnest_wall);
+    // Where: null with the wall (none found).
+    const bool found = std::isfinite(s.thinnest_wall);
+    j += ", \"thinnest_wall_at\": ";
+    j += found ? "[" + number(s.thinnest_wall_at[0]) + ", " + number(s.thinnest_wall_at[1]) + ", " +
+                     number(s.thinnest_wall_at[2]) + "]"
+               : "null";
     j += "}";
   }
   j += stats.solids.empty() ? "]\n" : "\n  ]\n";

@@ -57,6 +57,7 @@ TEST(StatsToJson, IsValidJson) {
   s.timings.push_back({"we\"ird\\stage\n", std::numeric_limits<double>::quiet_NaN()});
   s.warnings = {"walls down to 1 thick \"here\"", "second"};
   s.solids[0].thinnest_wall = 1.5;
+  s.solids[0].thinnest_wall_at = {1, -2.5, 3};
   s.solids[1].thinnest_wall = std::numeric_limits<double>::infinity();  // none found: null
   test::write_file(dir.file("s.json"), stats_to_json(s));
   test::write_file(dir.file("empty.json"), stats_to_json(ComputeStats{}));
@@ -71,6 +72,7 @@ TEST(StatsToJson, IsValidJson) {
       "assert d[\"timings\"][\"we\\\"ird\\\\stage\\n\"] is None\n"
       "assert d[\"warnings\"] == [\"walls down to 1 thick \\\"here\\\"\", \"second\"]\n"
       "assert [s[\"thinnest_wall\"] for s in d[\"solids\"]] == [1.5, None]\n"
+      "assert [s[\"thinnest_wall_at\"] for s in d[\"solids\"]] == [[1, -2.5, 3], None]\n"
       "json.load(open(sys.argv[2]))' " +
       dir.file("s.json") + " " + dir.file("empty.json");
   EXPECT_EQ(std::system(check.c_str()), 0) << test::read_file(dir.file("s.json"));

@@ -56,6 +56,10 @@ TEST(ThinWalls, WithOneSpacingThePipelineWarnsAndReportsTheThickness) {
   ASSERT_EQ(thin.stats.solids.size(), 1u);
   EXPECT_GE(thin.stats.solids[0].thinnest_wall, 1.0 - 1e-9);
   EXPECT_LE(thin.stats.solids[0].thinnest_wall, 1.2);
+  // Where: on the plate's top or bottom face (z = 1 or 0), inside its 30 x 30 extent.
+  const Point3 at = thin.stats.solids[0].thinnest_wall_at;
+  EXPECT_TRUE(std::abs(at[2]) < 1e-9 || std::abs(at[2] - 1.0) < 1e-9) << at[2];
+  EXPECT_TRUE(at[0] >= 0 && at[0] <= 30 && at[1] >= 0 && at[1] <= 30) << at[0] << ", " << at[1];
   const ComputeResult thick = compute_medial_axis(test::make_box(20, 20, 20), params);
   EXPECT_TRUE(thick.stats.warnings.empty());
   EXPECT_TRUE(std::isinf(thick.stats.solids[0].thinnest_wall));
