@@ -315,12 +315,12 @@ def convex_edge_points(solids, h, angle_deg=10.0):
 
 def exact_wall(solid, at, reported, tol):
     """Twice the radius of the largest ball in the solid that touches its boundary at `at` (a
-    point on it): the wall's exact thickness there, on the material's side. The balls that touch
-    at `at` from one direction grow along it and nest, so their radius is bisected: a ball is in
-    the solid while its centre's distance to the boundary is its radius. The directions: the
-    inward normal of each face through `at` (two on an edge, as the engine's samples there have)
-    and their mean. `reported`: the engine's thickness there, which bounds the search (twice
-    it). None when `at` is on no face."""
+    point on it) from a face's side, its centre on the face's inward normal there: the wall's
+    exact thickness at `at`, on the material's side. On an edge, the smaller over its two faces,
+    as the engine's edge samples take the smaller of their two normals' balls. The balls along one
+    normal nest, so their radius is bisected: a ball is in the solid while its centre is inside
+    and its distance to the boundary is its radius. `reported`: the engine's thickness there,
+    which bounds the search (twice it). None when `at` is on no face."""
     import FreeCAD
     import Part
     p = FreeCAD.Vector(*at)
@@ -340,11 +340,7 @@ def exact_wall(solid, at, reported, tol):
         return None
     # Distances to the boundary: to a solid, a point inside it is at distance 0.
     boundary = Part.makeCompound(solid.Shells)
-    if len(inward) > 1:
-        mean = sum(inward, FreeCAD.Vector())
-        if mean.Length > 1e-9:
-            inward.append(mean.normalize())
-    best = 0.0
+    radii = []
     for n in inward:
         lo, hi = 0.0, 2.0 * reported
         for _ in range(50):
@@ -354,5 +350,5 @@ def exact_wall(solid, at, reported, tol):
             lo, hi = (r, hi) if inside else (lo, r)
             if hi - lo <= 1e-6 * reported:
                 break
-        best = max(best, lo)
-    return 2.0 * best
+        radii.append(lo)
+    return 2.0 * min(radii)

@@ -480,9 +480,9 @@ def write_page(a, recs, plain, meta, sweeps, speed, speed_err, paper, paper_err,
         L.append("Where the engine warns that walls are thinner than two sample spacings, it names the "
                  "thinnest (`thinnest_wall`, from its samples' shrinking balls) and where it found it "
                  "(`thinnest_wall_at`). \"exact\": twice the radius of the largest ball in the solid "
-                 "that touches the boundary at that point (bisected with FreeCAD's `distToShape` to the "
-                 "boundary and `isInside`; on an edge, the largest over its faces' inward normals and "
-                 "their mean). Exact below reported: the wall there is thinner still than the warning "
+                 "that touches the boundary at that point from a face's side, its centre on the face's "
+                 "inward normal (bisected with FreeCAD's `distToShape` to the boundary and `isInside`; "
+                 "on an edge, the smaller over its two faces, as the engine takes it). Exact below reported: the wall there is thinner still than the warning "
                  "says. Above: the engine measured the wall beside the point thinner than at it (near a "
                  "sharp wedge's edge, where the wedge thins to nothing).\n")
         rows = []

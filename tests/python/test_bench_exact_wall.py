@@ -2,7 +2,6 @@
 radius of the largest ball in a solid that touches its boundary at a point, on solids whose
 answer is known."""
 
-import math
 import os
 import sys
 
@@ -32,13 +31,13 @@ def test_no_ball_touches_a_convex_edge():
     assert measures.exact_wall(Part.makeBox(30, 30, 1), (0, 15, 1), 1.0, TOL) < 1e-5
 
 
-def test_at_a_concave_edge_the_ball_along_the_faces_mean_normal_is_larger():
-    # An L of arms 2 thick: the ball at the inner corner (2, 2) along the diagonal touches both
-    # outer walls, radius 2 / (1 + 1/sqrt(2)); along either face's normal it is 1.
-    outline = [(0, 0, 0), (10, 0, 0), (10, 2, 0), (2, 2, 0), (2, 10, 0), (0, 10, 0), (0, 0, 0)]
+def test_at_a_concave_edge_the_smaller_of_the_two_faces_balls():
+    # An L of arms 2 and 3 thick: at its inner edge (3, 2) the ball along the thinner arm's face
+    # normal has radius 1, along the other's 1.5.
+    outline = [(0, 0, 0), (10, 0, 0), (10, 2, 0), (3, 2, 0), (3, 10, 0), (0, 10, 0), (0, 0, 0)]
     l_block = Part.Face(Part.makePolygon([FreeCAD.Vector(*p) for p in outline])).extrude(FreeCAD.Vector(0, 0, 5))
-    expected = 2 * 2 / (1 + 1 / math.sqrt(2))
-    assert measures.exact_wall(l_block, (2, 2, 2.5), 2.0, TOL) == pytest.approx(expected, rel=1e-5)
+    assert measures.exact_wall(l_block, (3, 2, 2.5), 2.0, TOL) == pytest.approx(2.0, rel=1e-5)
+    assert measures.exact_wall(l_block, (3, 6, 2.5), 3.0, TOL) == pytest.approx(3.0, rel=1e-5)
 
 
 def test_a_point_off_the_boundary_has_no_answer():
