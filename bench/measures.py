@@ -330,11 +330,11 @@ def exact_wall(solid, at, reported, tol):
         if f.distToShape(v)[0] > tol:
             continue
         u, w = f.Surface.parameter(p)
-        n = f.normalAt(u, w)
+        # FreeCAD's normalAt is the face's outward normal (BRepGProp_Face: reversed with a
+        # reversed face). A test step into the solid would not tell at a concave edge, where
+        # a step along one face's outward normal can run into the other face's material.
+        n = -f.normalAt(u, w)
         n.normalize()
-        # Inward: the side where a short step stays in the solid.
-        if not solid.isInside(p + n * (1e3 * tol), tol, False):
-            n = -n
         inward.append(n)
     if not inward:
         return None
