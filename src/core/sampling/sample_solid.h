@@ -67,6 +67,9 @@ struct SolidMeasure {
     double size;       ///< area of a face, length of a sharp edge
     double curvature;  ///< typical largest principal curvature (faces) or curvature (edges)
     bool convex;       ///< a convex edge (it takes triplets)
+    /// Faces: the length of their convex and of their concave edges (a strip along each gets
+    /// no interior samples).
+    double convex_edges = 0.0, concave_edges = 0.0;
   };
   std::vector<Piece> faces, sharp_edges;
 };
