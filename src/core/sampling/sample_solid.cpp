@@ -897,9 +897,9 @@ double estimate_samples(const SolidMeasure& m, double spacing) {
   // Thinning keeps samples at least r apart, which packs about one per 1.47 r^2 (a 100 mm cube at
   // spacing 1 gets 39,168 face samples on the 57,600 mm^2 away from its edges). None lie within
   // 1.05 triplet legs and r / 2 of a convex edge (its triplets are there) or about r / 2 of a
-  // concave one: those strips are taken off each face at its own density. (Taken off at the uniform density,
-  // as before, a small curved face between convex edges was estimated at 260 samples where it
-  // got 29, on the Y-rod mount at spacing 3.4.)
+  // concave one: those strips are taken off each face at its own density. (Taken off at the
+  // uniform density, as before, a small curved face between convex edges was estimated at 260
+  // samples where it got 29, on the Y-rod mount at spacing 3.4.)
   constexpr double kAreaPerSample = 1.47;
   double faces = 0, edges = 0;
   for (const auto& f : m.faces) {
