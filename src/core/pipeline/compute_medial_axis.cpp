@@ -163,14 +163,18 @@ SpacingField thin_wall_field(const Samples& samples, const Features& features, d
   return field;
 }
 
-// The solid sampled again with `field`; or, when it is uniform, the thinnest wall is final.
+// No wall thinner than the spacing: the uniform sampling is final, and so is its thinnest wall.
+void keep_uniform(SolidSampling& s, double spacing) {
+  s.field = SpacingField(spacing);
+  s.thin = ThinWall{};
+  s.walls_pending = false;
+}
+
+// The solid sampled again with `field`; or, when it is uniform, kept.
 void resample_for(SolidSampling& s, SpacingField field, SolidSampler& sampler, const Progress& progress) {
+  if (field.is_uniform()) return keep_uniform(s, field.uniform());
   s.field = std::move(field);
   s.walls_pending = false;
-  if (s.field.is_uniform()) {
-    s.thin = ThinWall{};  // no wall thinner than the spacing
-    return;
-  }
   s.samples = sampler.sample(s.field, progress);
 }
 
@@ -381,9 +385,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
                   resample = true;
                   return Umbrellas();
                 }
-                s.field = SpacingField(spacing);
-                s.thin = ThinWall{};  // no wall thinner than the spacing
-                s.walls_pending = false;
+                keep_uniform(s, spacing);
               }
               start = Clock::now();
               run_deferred_checks(to_check);
