@@ -14,10 +14,11 @@
 
 namespace cadmedial::internal {
 
-/// Per cell id of mc, the cell it merges into: the first of the neighbouring cells whose
-/// circumcentres lie within eps of its centre (cospherical samples). Reads only mc's centres and
-/// neighbours: it may run beside the completion.
-std::vector<int> coincident_cells(const MedialComplex& mc, double eps);
+/// Per cell id of mc, the cell it merges into: the first of the cells joined to it through
+/// neighbours with the same circumcentre (exactly cospherical samples, or the same doubles), or
+/// with centres within eps where no other neighbour's lies within 1000 eps. Reads only mc's
+/// centres, samples and neighbours: it may run beside the completion.
+std::vector<int> coincident_cells(const MedialComplex& mc, const std::vector<Point3>& points, double eps);
 /// Merges the cells by `rep` (coincident_cells) in mc's faces, centres and stars.
 void merge_coincident_cells(MedialComplex& mc, std::vector<int> rep, const Progress& progress);
 /// 1 inside, 0 outside, per cell id of mc. Vertices just outside that would cut a hole in the

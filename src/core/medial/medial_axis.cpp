@@ -78,7 +78,7 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
       },
       [&](const std::atomic<bool>&) {
         const auto [lo, hi] = bounding_box(samples.points);
-        rep = coincident_cells(mc, 1e-9 * norm(sub(hi, lo)));
+        rep = coincident_cells(mc, samples.points, 1e-9 * norm(sub(hi, lo)));
       });
   if (!params.plain_medial) star_cells(mc, samples.size());
   st.timings.push_back({"completion", seconds_since(t0)});

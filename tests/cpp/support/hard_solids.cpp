@@ -19,6 +19,7 @@
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Tool.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <GeomAPI_PointsToBSplineSurface.hxx>
@@ -163,6 +164,23 @@ TopoDS_Solid make_block_with_filleted_hole(double a, double b, double c, double 
   fillet.Build();
   if (!fillet.IsDone()) throw std::runtime_error("make_block_with_filleted_hole: the fillet failed");
   return single_valid_solid(fillet.Shape(), "make_block_with_filleted_hole");
+}
+
+TopoDS_Solid make_ball_on_neck(double R, double r, double length, double r_fillet) {
+  const TopoDS_Shape ball = BRepPrimAPI_MakeSphere(R).Shape();
+  const TopoDS_Shape neck = BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 0), gp_Dir(0, 1, 0)), r, length).Shape();
+  const TopoDS_Solid body = single_valid_solid(unified(fuse(ball, neck)), "make_ball_on_neck");
+  BRepFilletAPI_MakeFillet fillet(body);
+  // The ball meets the neck along the one circle at y = sqrt(R^2 - r^2).
+  const double y = std::sqrt(R * R - r * r);
+  for (TopExp_Explorer e(body, TopAbs_EDGE); e.More(); e.Next()) {
+    BRepAdaptor_Curve curve(TopoDS::Edge(e.Current()));
+    if (curve.GetType() == GeomAbs_Circle && std::abs(curve.Circle().Location().Y() - y) < 1e-6)
+      fillet.Add(r_fillet, TopoDS::Edge(e.Current()));
+  }
+  fillet.Build();
+  if (!fillet.IsDone()) throw std::runtime_error("make_ball_on_neck: the fillet failed");
+  return single_valid_solid(fillet.Shape(), "make_ball_on_neck");
 }
 
 TopoDS_Solid make_bspline_loft(double height) {

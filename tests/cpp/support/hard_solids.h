@@ -52,4 +52,10 @@ TopoDS_Solid make_box_with_bspline_top(double a, double b, double c, double bump
 /// a/nx by b/ny, centred in their cells): round of radius `size` or square of side 2 `size`.
 TopoDS_Solid make_plate_with_holes(double a, double b, double c, int nx, int ny, double size, bool square);
 
+/// A ball of radius R about the origin fused with a neck, the cylinder of radius r < R along +y
+/// from the origin to y = length, their circle of intersection rounded with radius r_fillet. The
+/// fillet's edge on the ball is an approximation: OpenCASCADE gives it a tolerance of about 2e-5,
+/// so its samples lie that far off the ball's sphere.
+TopoDS_Solid make_ball_on_neck(double R, double r, double length, double r_fillet);
+
 }  // namespace cadmedial::test
