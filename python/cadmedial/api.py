@@ -114,8 +114,9 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
               comparison. Like the program's --plain-medial it leaves theta as given: the paper
               uses theta=22.5 for MEDIAL.
     adapt     True (default) samples walls thinner than the spacing allows more densely, down to
-              a quarter of the spacing (a second sampling pass); False, like the program's
-              --uniform, keeps one spacing everywhere.
+              a quarter of the spacing, or to what the thinnest wall needs (at most a 32nd)
+              where that takes at most 3 times the samples (a second sampling pass); False,
+              like the program's --uniform, keeps one spacing everywhere.
 
     Returns a MedialAxisResult. Raises InvalidInput (bad file, shape or parameter; also a
     ValueError), GeometryError (a stage failed; also a RuntimeError) or Cancelled.

@@ -57,7 +57,9 @@ struct SamplingParams {
   double spacing = 0.0;              ///< model units; 0 = derive
   std::size_t target_samples = 0;    ///< approximate total over all solids; 0 = derive
   /// Where walls are too thin for the spacing to carry the axis's topology, sample them again
-  /// more densely (down to a quarter of the spacing); the target count is the uniform sampling's.
+  /// more densely (down to a quarter of the spacing; to what the thinnest wall needs, at most a
+  /// 32nd, where that takes at most 3 times the samples); the target count is the uniform
+  /// sampling's.
   bool adapt_to_walls = true;
   static constexpr std::size_t default_target_samples = 20000;
 };
