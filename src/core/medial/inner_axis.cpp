@@ -531,7 +531,11 @@ std::vector<int> coincident_cells(const MedialComplex& mc, const std::vector<Poi
   std::iota(exact.begin(), exact.end(), 0);
   std::iota(near.begin(), near.end(), 0);
   const double isolation = 1000.0 * eps;
-  std::vector<std::pair<int, int>> close;  // neighbours within `isolation`, each pair once
+  struct Close {
+    int a, b;
+    bool within_eps;
+  };
+  std::vector<Close> close;  // neighbours within `isolation`, each pair once
   for (size_t id = 0; id < n; ++id) {
     const int a = static_cast<int>(id);
     for (int b : mc.cell_neighbors[id]) {
@@ -539,22 +543,23 @@ std::vector<int> coincident_cells(const MedialComplex& mc, const std::vector<Poi
       const Point3 &ca = mc.centers[a], &cb = mc.centers[b];
       const double d = ca == cb ? 0.0 : norm(sub(ca, cb));
       if (!(d <= isolation)) continue;  // also for the NaN centre of a flat cell
-      close.push_back({a, b});
-      if (ca == cb || (d <= eps && cospherical(a, b))) {
-        join(exact, a, b);
-        join(near, a, b);
-      } else if (d <= eps) {
-        join(near, a, b);
-      }
+      close.push_back({a, b, d <= eps});
+      if (d <= eps) join(near, a, b);
     }
   }
   // A group joined through centres within eps keeps together only if no neighbour outside it lies
-  // within `isolation`; otherwise its cells fall back to their exact groups.
+  // within `isolation`; otherwise its cells fall back to their exact groups (the exact predicate
+  // only there: exactly cospherical samples on a plane's lattice are many, and each such test
+  // falls back to exact arithmetic).
   std::vector<char> crowded(n, 0);
-  for (const auto& [a, b] : close) {
-    const int ra = find_root(near, a), rb = find_root(near, b);
+  for (const Close& c : close) {
+    const int ra = find_root(near, c.a), rb = find_root(near, c.b);
     if (ra != rb) crowded[ra] = crowded[rb] = 1;
   }
+  for (const Close& c : close)
+    if (c.within_eps && crowded[find_root(near, c.a)] &&
+        (mc.centers[c.a] == mc.centers[c.b] || cospherical(c.a, c.b)))
+      join(exact, c.a, c.b);
   std::vector<int> rep(n);
   for (size_t id = 0; id < n; ++id) {
     const int r = find_root(near, static_cast<int>(id));
