@@ -548,9 +548,9 @@ std::vector<int> coincident_cells(const MedialComplex& mc, const std::vector<Poi
     }
   }
   // A group joined through centres within eps keeps together only if no neighbour outside it lies
-  // within `isolation`; otherwise its cells fall back to their exact groups (the exact predicate
-  // only there: exactly cospherical samples on a plane's lattice are many, and each such test
-  // falls back to exact arithmetic).
+  // within `isolation`; otherwise its cells fall back to their exact groups. The exact predicate
+  // runs only there: on every close pair it doubled the completion stage, where this runs beside
+  // it (the Y-rod at 66k: 0.130 s against 0.057 s).
   std::vector<char> crowded(n, 0);
   for (const Close& c : close) {
     const int ra = find_root(near, c.a), rb = find_root(near, c.b);

@@ -191,11 +191,11 @@ bool has_sharp_wedge(const Samples& samples) {
 // The solid sampled again, finer where its uniform sampling s.samples shows walls thinner than
 // the spacing (radii: radii_of_thin_walls); or, when none is, kept. Down to kMaxRefinement times
 // finer, then, where the thinnest wall needs finer still and the samples stay within budget,
-// down to what it needs (at most kDeepestRefinement), unless the solid has a sharp wedge (above):
-// NIST FTC 06's raised letters, 0.8 to 3 mm
-// wide at spacing 11.7, need 32 (-21 where the solid's Euler characteristic is -9 at 4 times,
-// -12 at 8; 44,936 samples at 16, 47,616 at 32, from 32,067 at 4). A solid whose walls are thin
-// over a large area stays at 4 times: the shelf took 280,849 samples there and 918,767 at 16.
+// down to what it needs (at most kDeepestRefinement), unless the solid has a sharp wedge (above).
+// NIST FTC 06's raised letters, 0.8 to 3 mm wide at spacing 11.7, need 16 to 32: Euler -21 at 4
+// times, -12 at 8, -9 (the solid's) at 16 and 32, with 32,067 / 38,575 / 44,936 / 47,616
+// samples. A solid whose walls are thin over a large area stays at 4 times: the shelf took
+// 280,849 samples there and 918,767 at 16.
 void resample_for(SolidSampling& s, const Features& features, double spacing, const std::vector<double>& radii,
                   SolidSampler& sampler, const Progress& progress) {
   SpacingField field = thin_wall_field(s.samples, features, spacing, radii, kMaxRefinement);
