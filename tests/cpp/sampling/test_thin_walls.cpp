@@ -2,6 +2,7 @@
 // (the medial radius there) and the pipeline warns; on a block whose walls are far apart, and on
 // a wedge whose faces only meet at its convex edge, it finds nothing.
 #include <cmath>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,16 @@
 
 namespace cadmedial {
 namespace {
+
+// One spacing everywhere, and the default (finer at thin walls), both at `spacing`.
+std::pair<ComputeParams, ComputeParams> uniform_and_adaptive(double spacing) {
+  ComputeParams uniform;
+  uniform.sampling.spacing = spacing;
+  uniform.sampling.adapt_to_walls = false;
+  ComputeParams adaptive = uniform;
+  adaptive.sampling.adapt_to_walls = true;
+  return {uniform, adaptive};
+}
 
 ThinWall thin_wall_of(const TopoDS_Solid& solid, double spacing) {
   const Features f = classify_features(solid);
@@ -70,11 +81,7 @@ TEST(ThinWalls, WithOneSpacingThePipelineWarnsAndReportsTheThickness) {
 // no warning, and the medial axis has the plate's topology. A plate 0.4 thick needs a spacing of
 // 0.1, finer than 1/4: the warning stays and says so. A thick block is sampled once, unchanged.
 TEST(ThinWalls, AdaptiveSamplingResolvesThinWallsDownToAQuarterOfTheSpacing) {
-  ComputeParams uniform;
-  uniform.sampling.spacing = 1.0;
-  uniform.sampling.adapt_to_walls = false;
-  ComputeParams adaptive = uniform;
-  adaptive.sampling.adapt_to_walls = true;
+  const auto [uniform, adaptive] = uniform_and_adaptive(1.0);
 
   const TopoDS_Solid plate = test::make_box(30, 30, 1);
   const ComputeResult once = compute_medial_axis(plate, uniform);
@@ -103,11 +110,7 @@ TEST(ThinWalls, AdaptiveSamplingResolvesThinWallsDownToAQuarterOfTheSpacing) {
 // samples. The sampling goes down to it: no warning, and the block's topology. (Before, it
 // stopped at a quarter and warned; NIST FTC 06's raised letters left 12 extra loops so.)
 TEST(ThinWalls, AFewSmallThinWallsAreSampledFinerThanAQuarterOfTheSpacing) {
-  ComputeParams uniform;
-  uniform.sampling.spacing = 3.0;
-  uniform.sampling.adapt_to_walls = false;
-  ComputeParams adaptive = uniform;
-  adaptive.sampling.adapt_to_walls = true;
+  const auto [uniform, adaptive] = uniform_and_adaptive(3.0);
   const TopoDS_Solid pinned = test::make_block_with_boss(100, 100, 20, 0.5, 1.0);
   const ComputeResult once = compute_medial_axis(pinned, uniform);
   const ComputeResult adapted = compute_medial_axis(pinned, adaptive);
