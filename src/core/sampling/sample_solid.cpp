@@ -613,7 +613,7 @@ class Sampler {
     const double np = (kProbe + 1.0) * (kProbe + 1.0);
     plan.u_scale = std::max(su_sum / np, 1e-300);
     plan.v_scale = std::max(sv_sum / np, 1e-300);
-    const double r_min = k_max > 0 ? std::clamp(sp_.max_turn_rad / k_max, sp_.min_face, sp_.face) : sp_.face;
+    const double r_min = sp_.face_at(k_max);
     // Candidate step: half the smallest local spacing, in space.
     const double step = 0.5 * r_min;
     long nu = std::max(1L, static_cast<long>(std::ceil((u1 - u0) * su_max / step)));
@@ -903,7 +903,7 @@ double estimate_samples(const SolidMeasure& m, double spacing) {
   constexpr double kAreaPerSample = 1.47;
   double faces = 0, edges = 0;
   for (const auto& f : m.faces) {
-    const double r = f.curvature > 0 ? std::clamp(sp.max_turn_rad / f.curvature, sp.min_face, sp.face) : sp.face;
+    const double r = sp.face_at(f.curvature);
     const double strips = f.convex_edges * (1.05 * sp.triplet + 0.5 * r) + f.concave_edges * 0.5 * r;
     faces += std::max(0.0, f.size - strips) / (kAreaPerSample * r * r);
   }

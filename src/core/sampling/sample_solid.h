@@ -2,6 +2,7 @@
 // regular spacing, triplets across convex edges, and face interiors evenly in space.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -25,6 +26,12 @@ struct SampleSpacing {
   double triplet = 0.0;
   double min_face = 0.0;     ///< floor of the curvature refinement
   double max_turn_rad = 0.0; ///< largest angle a chord between neighbours may turn on a curve
+
+  /// The face spacing where the surface's largest principal curvature is `curvature`: finer
+  /// where it curves, down to min_face.
+  double face_at(double curvature) const {
+    return curvature > 0 ? std::clamp(max_turn_rad / curvature, min_face, face) : face;
+  }
 };
 SampleSpacing sample_spacing(double spacing);
 

@@ -69,8 +69,7 @@ double refined_sample_count(const Samples& first, const SpacingField& field) {
       n += 1;
       continue;
     }
-    const double k = first.curvature[i];
-    const double own = k > 0 ? std::clamp(sp.max_turn_rad / k, sp.min_face, sp.face) : sp.face;
+    const double own = sp.face_at(first.curvature[i]);
     const double ratio = own / std::min(own, field.at(first.points[i]));
     n += tag == SampleTag::Face ? std::min(64.0, ratio * ratio) : ratio;
   }
