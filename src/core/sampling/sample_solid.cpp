@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <future>
 #include <limits>
 #include <memory>
@@ -381,64 +382,160 @@ class Sampler {
     return n;
   }
 
-  // 4.2.1 triplets: for every sample s on a convex edge, s_l and s_r on the two faces.
-  void sample_triplets() {
+  // One side of a triplet, as its face sees it (the Newton walk, the face's classifier, the
+  // normal and curvature): what the sequential pass below would compute, with any error kept
+  // until that pass would have met it.
+  struct TripletSide {
+    bool on_surface = false, inside = false;
+    gp_Pnt2d uv;
+    gp_Pnt q;
+    Point3 normal{0, 0, 0};
+    float curvature = 0;
+    std::exception_ptr surface_error, inside_error, describe_error;
+  };
+
+  // The edge samples that get triplets (a convex edge's non-corner samples where the edge is
+  // convex), in the order of the sequential pass: (edge, chain index).
+  std::vector<std::array<int, 2>> triplet_slots() const {
+    std::vector<std::array<int, 2>> slots;
     const int ne = f_.edges.Extent();
     for (int e = 0; e < ne; ++e) {
-      report(progress_, "sampling", 0.1 + 0.1 * e / std::max(1, ne));
       const EdgeKind kind = f_.edge_kind[e];
       if (kind != EdgeKind::Convex && kind != EdgeKind::Mixed) continue;
       const auto& chain = chains_[e];
       for (size_t i = 0; i < chain.size(); ++i) {
-        const int s = chain[i].sample;
-        if (out_.tag[s] == SampleTag::Corner) continue;
-        // edge_point(f_, e, chain[i].t) as describe_edge_sample computed it; where it threw there,
-        // it would throw here too.
-        if (chain[i].point < 0) continue;
-        const EdgePoint& ep = edge_points_[chain[i].point];
-        if (ep.kind != PointKind::Convex) continue;
-        const double d = sample_spacing(field_.on_edge(e)).triplet;
-        int side[2] = {-1, -1};
-        gp_Pnt2d uv[2];
-        gp_Pnt q[2];
-        bool ok = true;
-        for (int k = 0; k < 2 && ok; ++k) {
-          const int fi = f_.edge_faces[e][k];
-          ok = point_on_surface_at(fi, ep.point, ep.tangent, ep.inward[k], ep.uv[k], d, uv[k], q[k]);
-          // Keep clear of samples from other edges: near a corner two edges' triplets meet. At a
-          // right-angled corner they meet exactly, and then share the point.
-          if (ok)
-            ok = !grid_.any_near(to_point(q[k]), 0.5 * d, [&](int id) {
-              if (id == s) return false;
-              const double d2 = distance2(out_.points[id], to_point(q[k]));
-              if (d2 < 1e-12 * d * d && out_.tag[id] == SampleTag::Triplet && out_.face[id] == fi) {
-                side[k] = id;
-                return false;
-              }
-              return d2 < 0.25 * d * d;
-            });
-          // The face's classifier last: the point is next to the boundary, where it is slowest
-          // (a parity test over the boundary polygons, 20 % of a thin part's run).
-          if (ok) ok = inside_face(fi, uv[k]);
-        }
-        if (!ok) continue;
-        for (int k = 0; k < 2; ++k) {
-          const int fi = f_.edge_faces[e][k];
-          if (side[k] >= 0) continue;
-          side[k] = add(to_point(q[k]), SampleTag::Triplet);
-          out_.face[side[k]] = fi;
-          out_.normal[side[k]] = to_point(outward_normal(fi, uv[k].X(), uv[k].Y()));
-          out_.curvature[side[k]] = static_cast<float>(curvature_at(fi, uv[k].X(), uv[k].Y()));
-          face_points_[fi].push_back({side[k], {uv[k].X(), uv[k].Y()}});
-        }
-        Triplet tr;
-        tr.s = s;
-        tr.sl = side[0];
-        tr.sr = side[1];
-        tr.prev = i > 0 ? chain[i - 1].sample : -1;
-        tr.next = i + 1 < chain.size() ? chain[i + 1].sample : -1;
-        out_.triplets.push_back(tr);
+        // No edge point: edge_point() threw for describe_edge_sample, and would again here.
+        if (out_.tag[chain[i].sample] == SampleTag::Corner || chain[i].point < 0) continue;
+        if (edge_points_[chain[i].point].kind != PointKind::Convex) continue;
+        slots.push_back({e, static_cast<int>(i)});
       }
+    }
+    return slots;
+  }
+
+  // Both sides of every slot, face by face on two threads (a face's surface, lattice and
+  // classifier are touched by one thread only, as in sample_faces). Sides that the sequential
+  // pass skips (the other side failed first, a crowded point) are computed too: the two threads
+  // still finish sooner (the classifier near a face's boundary is the slowest part).
+  std::vector<TripletSide> triplet_sides(const std::vector<std::array<int, 2>>& slots) {
+    std::vector<TripletSide> sides(2 * slots.size());
+    const int nf = f_.faces.Extent();
+    std::vector<std::vector<int>> of_face(nf);
+    for (size_t k = 0; k < sides.size(); ++k) of_face[f_.edge_faces[slots[k / 2][0]][k % 2]].push_back(static_cast<int>(k));
+    std::vector<int> order;
+    for (int fi = 0; fi < nf; ++fi)
+      if (!of_face[fi].empty()) order.push_back(fi);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return of_face[a].size() > of_face[b].size(); });
+    const int todo = static_cast<int>(order.size());
+    std::atomic<int> next{0}, done{0};
+    std::atomic<bool> stop{false};
+    const auto work = [&](bool reports) {
+      try {
+        for (int n; !stop && (n = next++) < todo;) {
+          const int fi = order[n];
+          for (int k : of_face[fi]) {
+            const auto [e, i] = slots[k / 2];
+            const EdgePoint& ep = edge_points_[chains_[e][i].point];
+            const double d = sample_spacing(field_.on_edge(e)).triplet;
+            TripletSide& side = sides[k];
+            try {
+              side.on_surface = point_on_surface_at(fi, ep.point, ep.tangent, ep.inward[k % 2], ep.uv[k % 2], d, side.uv, side.q);
+            } catch (...) {
+              side.surface_error = std::current_exception();
+              continue;
+            }
+            if (!side.on_surface) continue;
+            try {
+              side.inside = inside_face(fi, side.uv);
+            } catch (...) {
+              side.inside_error = std::current_exception();
+              continue;
+            }
+            if (!side.inside) continue;
+            try {
+              side.normal = to_point(outward_normal(fi, side.uv.X(), side.uv.Y()));
+              side.curvature = static_cast<float>(curvature_at(fi, side.uv.X(), side.uv.Y()));
+            } catch (...) {
+              side.describe_error = std::current_exception();
+            }
+          }
+          ++done;
+          if (reports) report(progress_, "sampling", 0.1 + 0.1 * done / std::max(1, todo));
+        }
+      } catch (...) {
+        stop = true;
+        throw;
+      }
+    };
+    if (todo < 2) {
+      work(true);
+      return sides;
+    }
+    std::future<void> other = std::async(std::launch::async, [&] { work(false); });
+    try {
+      work(true);
+    } catch (...) {
+      stop = true;
+      other.wait();
+      throw;
+    }
+    other.get();
+    return sides;
+  }
+
+  // 4.2.1 triplets: for every sample s on a convex edge, s_l and s_r on the two faces.
+  void sample_triplets() {
+    const std::vector<std::array<int, 2>> slots = triplet_slots();
+    const std::vector<TripletSide> sides = triplet_sides(slots);
+    for (size_t slot = 0; slot < slots.size(); ++slot) {
+      const auto [e, i] = slots[slot];
+      const auto& chain = chains_[e];
+      const int s = chain[i].sample;
+      const double d = sample_spacing(field_.on_edge(e)).triplet;
+      int side[2] = {-1, -1};
+      bool ok = true;
+      for (int k = 0; k < 2 && ok; ++k) {
+        const int fi = f_.edge_faces[e][k];
+        const TripletSide& t = sides[2 * slot + k];
+        if (t.surface_error) std::rethrow_exception(t.surface_error);
+        ok = t.on_surface;
+        const Point3 q = to_point(t.q);
+        // Keep clear of samples from other edges: near a corner two edges' triplets meet. At a
+        // right-angled corner they meet exactly, and then share the point.
+        if (ok)
+          ok = !grid_.any_near(q, 0.5 * d, [&](int id) {
+            if (id == s) return false;
+            const double d2 = distance2(out_.points[id], q);
+            if (d2 < 1e-12 * d * d && out_.tag[id] == SampleTag::Triplet && out_.face[id] == fi) {
+              side[k] = id;
+              return false;
+            }
+            return d2 < 0.25 * d * d;
+          });
+        if (ok) {
+          if (t.inside_error) std::rethrow_exception(t.inside_error);
+          ok = t.inside;
+        }
+      }
+      if (!ok) continue;
+      for (int k = 0; k < 2; ++k) {
+        const int fi = f_.edge_faces[e][k];
+        if (side[k] >= 0) continue;
+        const TripletSide& t = sides[2 * slot + k];
+        if (t.describe_error) std::rethrow_exception(t.describe_error);
+        side[k] = add(to_point(t.q), SampleTag::Triplet);
+        out_.face[side[k]] = fi;
+        out_.normal[side[k]] = t.normal;
+        out_.curvature[side[k]] = t.curvature;
+        face_points_[fi].push_back({side[k], {t.uv.X(), t.uv.Y()}});
+      }
+      Triplet tr;
+      tr.s = s;
+      tr.sl = side[0];
+      tr.sr = side[1];
+      tr.prev = i > 0 ? chain[i - 1].sample : -1;
+      tr.next = i + 1 < static_cast<int>(chain.size()) ? chain[i + 1].sample : -1;
+      out_.triplets.push_back(tr);
     }
   }
 
