@@ -114,11 +114,11 @@ void open_closed_sample_cells(const MedialComplex& mc, const Samples& samples, s
 // sample projects into the first face's empty circle): outside, rightly, but in the middle of the
 // selected sheet, where dropping its facets cuts a hole, a loop the solid does not have (a prism
 // over a triangle with a 35-degree corner: 25 such holes at 20k samples). These vertices come in
-// small groups joined by sides of selected facets; the selected facets at such a group have all
-// their other corners inside and form a disk, the sheet, and each vertex of the group lies beyond
-// one of its samples' tangent planes but on the inner side of another's (it crossed the boundary
-// between two faces). Such a group goes inside, each vertex moved along its facet towards an inside
-// corner to just behind the planes it lay beyond. The outer axis in a through-hole does not pass:
+// small groups joined through the selected facets they share; the selected facets at such a group
+// have all their other corners inside and form a disk, the sheet, and each vertex of the group lies
+// beyond one of its samples' tangent planes but on the inner side of another's (it crossed the
+// boundary between two faces). Such a group goes inside, each vertex moved along its facet towards
+// an inside corner to just behind the planes it lay beyond. The outer axis in a through-hole does not pass:
 // its vertices lie beyond all their samples' planes (NIST CTC 02: five hole disks otherwise).
 void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std::uint8_t>& label) {
   const std::size_t nf = mc.size(), nc = mc.num_cells();
@@ -146,8 +146,11 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
   }, 1 << 14);
   auto joins = [&](int node) { return node >= 0 && straddling[node]; };
   // The selected facets with a straddling corner (most of the outer axis's have none: they
-  // belong to no group that can go inside), and their sides that join two, half the facets on
-  // each core; the second half's lists follow the first's, in facet order.
+  // belong to no group that can go inside), and pairs of straddling corners to join: all of a
+  // facet's go in one group. (Joined only along the facet's sides, two that were not neighbours
+  // made two groups that spoiled each other: prisms with a 20- or 25-degree corner were at -5 at
+  // spacing 0.3, test_hard_inputs.) Half the facets on each core; the second half's lists follow
+  // the first's, in facet order.
   struct Found {
     std::vector<int> faces;
     std::vector<std::pair<int, int>> sides;
@@ -157,11 +160,13 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
       if (!selected(f)) continue;
       const int b = mc.start[f], e = mc.start[f + 1];
       bool straddled = false;
+      int first = -1;
       for (int k = b; k < e; ++k) {
-        const int x = mc.nodes[k], y = mc.nodes[k + 1 < e ? k + 1 : b];
+        const int x = mc.nodes[k];
         if (!joins(x)) continue;
         straddled = true;
-        if (joins(y)) half[part].sides.push_back({x, y});
+        if (first < 0) first = x;
+        else half[part].sides.push_back({first, x});
       }
       if (straddled) half[part].faces.push_back(static_cast<int>(f));
     }
