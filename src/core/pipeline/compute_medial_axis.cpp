@@ -1,5 +1,6 @@
 #include "compute_medial_axis.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <atomic>
@@ -176,17 +177,30 @@ void keep_uniform(SolidSampling& s, double spacing) {
   s.walls_pending = false;
 }
 
-// Whether a convex edge of the sampled solid is sharper than kSharpWedgeDot (its samples carry both
-// faces' normals). Near such a wedge the thin-wall check finds the wedge itself thin; sampled
-// finer than a quarter there, the sheet that bisects it got holes: PocketTest's 14-degree wedge,
-// Euler 2 / 1 / -2 / -2 at 12k / 20k / 30k / 50k samples, where a quarter gave 1 at each.
-bool has_sharp_wedge(const Samples& samples) {
+// The sharpest convex wedge of the sampled solid: the smallest dot product of the two faces'
+// normals over the convex edge samples (they carry both), and where (1 when there is none).
+struct SharpestWedge {
+  double dot = 1.0;
+  Point3 at{0, 0, 0};
+  double degrees() const { return 180.0 - std::acos(std::clamp(dot, -1.0, 1.0)) * 180.0 / 3.14159265358979323846; }
+};
+
+SharpestWedge sharpest_wedge(const Samples& samples) {
+  SharpestWedge w;
   for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (samples.edge_convex[i] != 1) continue;
     const Point3 &a = samples.normal[i], &b = samples.normal2[i];
-    if (samples.edge_convex[i] == 1 && a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < kSharpWedgeDot) return true;
+    const double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    if (d < w.dot) w.dot = d, w.at = samples.points[i];
   }
-  return false;
+  return w;
 }
+
+// Whether a convex edge of the sampled solid is sharper than kSharpWedgeDot. Near such a wedge
+// the thin-wall check finds the wedge itself thin; sampled finer than a quarter there, the sheet
+// that bisects it got holes: PocketTest's 14-degree wedge, Euler 2 / 1 / -2 / -2 at 12k / 20k /
+// 30k / 50k samples, where a quarter gave 1 at each.
+bool has_sharp_wedge(const Samples& samples) { return sharpest_wedge(samples).dot < kSharpWedgeDot; }
 
 // The solid sampled again, finer where its uniform sampling s.samples shows walls thinner than
 // the spacing (radii: radii_of_thin_walls); or, when none is, kept. Down to kMaxRefinement times
@@ -260,6 +274,22 @@ std::vector<std::unique_ptr<SolidSampler>> samplers_for(const std::vector<TopoDS
   std::vector<std::unique_ptr<SolidSampler>> samplers;
   for (size_t i = 0; i < solids.size(); ++i) samplers.push_back(std::make_unique<SolidSampler>(solids[i], features[i]));
   return samplers;
+}
+
+// A convex edge sharper than the thin-wall sampling adapts to (kSharpWedgeDot): the sheet that
+// bisects it is undersampled near the edge, and nothing else in the result would say so. A
+// triangle prism with a 15-degree corner gave Euler -2 / -5 / -4 at 10k / 20k / 40k samples, one
+// with a 10-degree corner 10 to 15 pieces; from 20 degrees up they are right.
+void warn_of_sharp_wedge(const Samples& samples, int solid, int solids, std::vector<std::string>& warnings) {
+  const SharpestWedge w = sharpest_wedge(samples);
+  if (!(w.dot < kSharpWedgeDot)) return;
+  std::ostringstream msg;
+  msg.precision(3);
+  if (solids > 1) msg << "solid " << solid + 1 << ": ";
+  msg << "a convex edge near (" << w.at[0] << ", " << w.at[1] << ", " << w.at[2] << ") is a " << w.degrees()
+      << "-degree wedge, sharper than the " << SharpestWedge{kSharpWedgeDot}.degrees()
+      << " degrees the sampling adapts to; the axis near it may have holes or loose pieces";
+  warnings.push_back(msg.str());
 }
 
 // Facing walls closer than two (local) spacings: the Voronoi sheet between them is only as good as
@@ -482,6 +512,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       // Beside the kept triangulation, overlapping "delaunay" as "check" and "reconstruction" do.
       if (walls_seconds > 0 && sampling.field.is_uniform()) add_timing(stats.timings, "walls", walls_seconds);
       warn_of_thin_walls(thin, sampled[i].field, i, n, ss, stats.warnings);
+      warn_of_sharp_wedge(samples, i, n, stats.warnings);
       if (checks_here) add_timing(stats.timings, "check", check_seconds);
       add_timing(stats.timings, "reconstruction", reconstruction_seconds);
       for (const auto& [stage, s] : ms.timings) add_timing(stats.timings, stage, s);

@@ -359,18 +359,25 @@ namespace {
 // of it (they were split into groups that spoiled each other: V - E + F was -3 / -5 / -3 at
 // spacing 0.25 / 0.3 / 0.4 on the 20-degree prism). Moved inside, every vertex stays within the
 // prism and its radius within a spacing of its distance to the boundary.
+constexpr double kLegs = 15, kHeight = 5, kPrismSpacing = 0.3;
+
+// An isosceles triangle with legs kLegs and a corner of `degrees` at the origin.
+std::vector<std::array<double, 2>> sharp_triangle(double degrees) {
+  const double half = 0.5 * degrees * 3.14159265358979323846 / 180;
+  return {{0, 0}, {kLegs * std::cos(half), -kLegs * std::sin(half)}, {kLegs * std::cos(half), kLegs * std::sin(half)}};
+}
+
+const ComputeResult& sharp_prism_axis(double degrees) {
+  return medial_axis_of("triangle_prism_" + std::to_string(static_cast<int>(degrees)),
+                        [degrees] { return make_prism(sharp_triangle(degrees), kHeight); }, kPrismSpacing);
+}
+
 TEST(SharpConvexEdges, LeaveNoHolesDownToTwentyDegrees) {
-  const double pi = 3.14159265358979323846, spacing = 0.3, legs = 15, height = 5;
   for (const double degrees : {20.0, 25.0}) {
-    const double half = 0.5 * degrees * pi / 180;
-    const std::vector<std::array<double, 2>> triangle{
-        {0, 0}, {legs * std::cos(half), -legs * std::sin(half)}, {legs * std::cos(half), legs * std::sin(half)}};
-    const auto make = [&] { return make_prism(triangle, height); };
-    const MedialMesh& m =
-        medial_axis_of("triangle_prism_" + std::to_string(static_cast<int>(degrees)), make, spacing).mesh;
-    EXPECT_EQ(solid_euler_characteristic(make()), 1);
-    EXPECT_EQ(euler_characteristic(m, legs), 1) << degrees << " degrees";
-    const ConvexPolytope prism = prism_polytope(triangle, height);
+    const MedialMesh& m = sharp_prism_axis(degrees).mesh;
+    EXPECT_EQ(solid_euler_characteristic(make_prism(sharp_triangle(degrees), kHeight)), 1);
+    EXPECT_EQ(euler_characteristic(m, kLegs), 1) << degrees << " degrees";
+    const ConvexPolytope prism = prism_polytope(sharp_triangle(degrees), kHeight);
     double deepest_outside = 0, worst_radius = 0;
     for (std::size_t v = 0; v < m.vertices.size(); ++v) {
       const Point3& p = m.vertices[v];
@@ -378,9 +385,26 @@ TEST(SharpConvexEdges, LeaveNoHolesDownToTwentyDegrees) {
       deepest_outside = std::min(deepest_outside, d);
       worst_radius = std::max(worst_radius, std::abs(m.radius[v] - d));
     }
-    EXPECT_GT(deepest_outside, -1e-9 * legs) << degrees << " degrees";
-    EXPECT_LT(worst_radius, spacing) << degrees << " degrees";
+    EXPECT_GT(deepest_outside, -1e-9 * kLegs) << degrees << " degrees";
+    EXPECT_LT(worst_radius, kPrismSpacing) << degrees << " degrees";
   }
+}
+
+// Sharper than the thin-wall sampling adapts to (18 degrees), the sheet near the edge is
+// undersampled (a 10-degree corner: the axis in 10 to 15 pieces): the user is told where.
+TEST(SharpConvexEdges, SharperThanTheSamplingAdaptsToAreWarnedAbout) {
+  auto wedge_warnings = [](const ComputeResult& r) {
+    std::vector<std::string> found;
+    for (const std::string& w : r.stats.warnings)
+      if (w.find("-degree wedge") != std::string::npos) found.push_back(w);
+    return found;
+  };
+  const std::vector<std::string> sharp = wedge_warnings(sharp_prism_axis(10));
+  ASSERT_EQ(sharp.size(), 1u);
+  EXPECT_NE(sharp[0].find("is a 10-degree wedge"), std::string::npos) << sharp[0];
+  // On the edge through the origin, along z.
+  EXPECT_NE(sharp[0].find("near (0, 0, "), std::string::npos) << sharp[0];
+  EXPECT_TRUE(wedge_warnings(sharp_prism_axis(20)).empty());
 }
 
 }  // namespace
