@@ -278,8 +278,8 @@ std::vector<std::unique_ptr<SolidSampler>> samplers_for(const std::vector<TopoDS
 
 // A convex edge sharper than the thin-wall sampling adapts to (kSharpWedgeDot): the sheet that
 // bisects it is undersampled near the edge, and nothing else in the result would say so. A
-// triangle prism with a 15-degree corner gave Euler -2 / -5 / -4 at 10k / 20k / 40k samples, one
-// with a 10-degree corner 10 to 15 pieces; from 20 degrees up they are right.
+// triangle prism with a 10-degree corner gives Euler 1 / 0 / -3 at 10k / 20k / 40k samples; one
+// with a 15-degree corner is right at each (fill_sheet_holes), but by a repair, not the sampling.
 void warn_of_sharp_wedge(const Samples& samples, int solid, int solids, std::vector<std::string>& warnings) {
   const SharpestWedge w = sharpest_wedge(samples);
   if (!(w.dot < kSharpWedgeDot)) return;

@@ -354,11 +354,6 @@ TEST(SharpConvexEdges, LeaveNoHolesInTheBisectorSheet) {
 namespace cadmedial::test {
 namespace {
 
-// Triangular prisms with a 20- and a 25-degree corner: the holes that the sheet bisecting that
-// edge gets come in groups whose outside vertices share a selected facet without sharing a side
-// of it (they were split into groups that spoiled each other: V - E + F was -3 / -5 / -3 at
-// spacing 0.25 / 0.3 / 0.4 on the 20-degree prism). Moved inside, every vertex stays within the
-// prism and its radius within a spacing of its distance to the boundary.
 constexpr double kLegs = 15, kHeight = 5, kPrismSpacing = 0.3;
 
 // An isosceles triangle with legs kLegs and a corner of `degrees` at the origin.
@@ -372,8 +367,14 @@ const ComputeResult& sharp_prism_axis(double degrees) {
                         [degrees] { return make_prism(sharp_triangle(degrees), kHeight); }, kPrismSpacing);
 }
 
-TEST(SharpConvexEdges, LeaveNoHolesDownToTwentyDegrees) {
-  for (const double degrees : {20.0, 25.0}) {
+// Triangular prisms with a 15-, 20- and 25-degree corner: the holes that the sheet bisecting that
+// edge gets come in groups whose outside vertices share a selected facet without sharing a side
+// of it (they were split into groups that spoiled each other: V - E + F was -3 / -5 / -3 at
+// spacing 0.25 / 0.3 / 0.4 on the 20-degree prism), and at 15 degrees groups that surround inside
+// vertices (-2 at 0.3 with disks only). Moved inside, every vertex stays within the prism and its
+// radius within a spacing of its distance to the boundary.
+TEST(SharpConvexEdges, LeaveNoHolesDownToFifteenDegrees) {
+  for (const double degrees : {15.0, 20.0, 25.0}) {
     const MedialMesh& m = sharp_prism_axis(degrees).mesh;
     EXPECT_EQ(solid_euler_characteristic(make_prism(sharp_triangle(degrees), kHeight)), 1);
     EXPECT_EQ(euler_characteristic(m, kLegs), 1) << degrees << " degrees";
@@ -391,7 +392,7 @@ TEST(SharpConvexEdges, LeaveNoHolesDownToTwentyDegrees) {
 }
 
 // Sharper than the thin-wall sampling adapts to (18 degrees), the sheet near the edge is
-// undersampled (a 10-degree corner: the axis in 10 to 15 pieces): the user is told where.
+// undersampled (a 10-degree corner: Euler 0 and -3 at 20k and 40k samples): the user is told where.
 TEST(SharpConvexEdges, SharperThanTheSamplingAdaptsToAreWarnedAbout) {
   auto wedge_warnings = [](const ComputeResult& r) {
     std::vector<std::string> found;
