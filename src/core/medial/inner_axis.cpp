@@ -118,8 +118,9 @@ void open_closed_sample_cells(const MedialComplex& mc, const Samples& samples, s
 // have all their other corners inside and form a disk, the sheet, and each vertex of the group lies
 // beyond one of its samples' tangent planes but on the inner side of another's (it crossed the
 // boundary between two faces). Such a group goes inside, each vertex moved along its facet towards
-// an inside corner to just behind the planes it lay beyond. The outer axis in a through-hole does not pass:
-// its vertices lie beyond all their samples' planes (NIST CTC 02: five hole disks otherwise).
+// an inside corner to just behind the planes it lay beyond. The outer axis in a through-hole does
+// not pass: its vertices lie beyond all their samples' planes (NIST CTC 02: five hole disks
+// otherwise).
 //
 // Below about 18 degrees such a group can surround inside vertices or a gap (its facets an
 // annulus or more: a prism with a 15-degree corner had Euler -2 / -5 / -4 at 10k / 20k / 40k
@@ -172,8 +173,10 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
         const int x = mc.nodes[k];
         if (!joins(x)) continue;
         straddled = true;
-        if (first < 0) first = x;
-        else half[part].sides.push_back({first, x});
+        if (first < 0)
+          first = x;
+        else
+          half[part].sides.push_back({first, x});
       }
       if (straddled) half[part].faces.push_back(static_cast<int>(f));
     }
