@@ -34,6 +34,7 @@
 #include <TopoDS_Vertex.hxx>
 
 #include "../errors.h"
+#include "../two_cores.h"
 #include "lattice_classifier.h"
 #include "point_grid.h"
 
@@ -467,19 +468,10 @@ class Sampler {
         throw;
       }
     };
-    if (todo < 2) {
+    if (todo < 2)
       work(true);
-      return sides;
-    }
-    std::future<void> other = std::async(std::launch::async, [&] { work(false); });
-    try {
-      work(true);
-    } catch (...) {
-      stop = true;
-      other.wait();
-      throw;
-    }
-    other.get();
+    else
+      internal::on_two_cores([&] { work(true); }, [&](const std::atomic<bool>&) { work(false); });
     return sides;
   }
 
