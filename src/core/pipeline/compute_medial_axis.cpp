@@ -212,15 +212,16 @@ bool has_sharp_wedge(const Samples& samples) { return sharpest_wedge(samples).do
 // 280,849 samples there and 918,767 at 16.
 void resample_for(SolidSampling& s, const Features& features, double spacing, const std::vector<double>& radii,
                   SolidSampler& sampler, const Progress& progress) {
-  SpacingField field = thin_wall_field(s.samples, features, spacing, radii, kMaxRefinement);
-  if (field.is_uniform()) return keep_uniform(s, field.uniform());
-  s.walls_pending = false;
   double thinnest = spacing;
   for (double r : radii) thinnest = std::min(thinnest, r);
   const double needed = std::min(kDeepestRefinement, spacing / (kSpacingPerRadius * thinnest));
   const double first = static_cast<double>(s.samples.size());
+  // Whether a field is uniform does not depend on how fine it may go: the finer one, when it is
+  // tried, is made first, and the other only when it is needed.
   if (needed > kMaxRefinement && !has_sharp_wedge(s.samples)) {
     SpacingField finer = thin_wall_field(s.samples, features, spacing, radii, needed);
+    if (finer.is_uniform()) return keep_uniform(s, finer.uniform());
+    s.walls_pending = false;
     if (refined_sample_count(s.samples, finer) <= kTryFinerBelow * first) {
       Samples more = sampler.sample(finer, progress);
       if (static_cast<double>(more.size()) <= kSampleBudget * first) {
@@ -230,6 +231,9 @@ void resample_for(SolidSampling& s, const Features& features, double spacing, co
       }
     }
   }
+  SpacingField field = thin_wall_field(s.samples, features, spacing, radii, kMaxRefinement);
+  if (field.is_uniform()) return keep_uniform(s, field.uniform());
+  s.walls_pending = false;
   s.samples = sampler.sample(field, progress);
   s.field = std::move(field);
 }
