@@ -9,13 +9,14 @@
 
 namespace cadmedial {
 
-/// OpenCASCADE's solid classifier with tolerance `tol`; on the boundary counts as inside. The
-/// returned function keeps a reference to `solid`.
+/// Rays from the point (internal::RayClassifier), and where they do not settle it OpenCASCADE's
+/// solid classifier, with tolerance `tol`; on the boundary counts as inside. The returned function
+/// keeps a reference to `solid`.
 InsideTest exact_inside_test(const TopoDS_Solid& solid, double tol);
 
-/// The same, and in `prepare` a call that builds the classifiers (one per core) and classifies one
-/// point with each, which the first points asked would pay for otherwise (about 12 ms on the
-/// Y-rod mount): compute_medial_axis makes it on the core that idles while CGAL triangulates.
+/// The same, and in `prepare` a call that builds the ray classifiers (one per core), which the
+/// first points asked would pay for otherwise: compute_medial_axis makes it on the core that idles
+/// while CGAL triangulates.
 InsideTest exact_inside_test(const TopoDS_Solid& solid, double tol, std::function<void()>& prepare);
 
 }  // namespace cadmedial
