@@ -146,6 +146,8 @@ struct SolidSampling {
   /// The thin-wall check of the uniform sampling is still to run (compute_medial_axis runs it
   /// beside the triangulation).
   bool walls_pending = false;
+  /// After a refinement: half the thickness of the thinnest wall the uniform pass found.
+  double first_thinnest = std::numeric_limits<double>::infinity();
 };
 
 // Per sample of a uniform sampling, half the thickness of a wall thinner than the spacing.
@@ -216,6 +218,7 @@ void resample_for(SolidSampling& s, const Features& features, double spacing, co
   for (double r : radii) thinnest = std::min(thinnest, r);
   const double needed = std::min(kDeepestRefinement, spacing / (kSpacingPerRadius * thinnest));
   const double first = static_cast<double>(s.samples.size());
+  s.first_thinnest = thinnest;
   // Whether a field is uniform does not depend on how fine it may go: the finer one, when it is
   // tried, is made first, and the other only when it is needed.
   if (needed > kMaxRefinement && !has_sharp_wedge(s.samples)) {
@@ -471,7 +474,8 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
               Umbrellas u = reconstruct_faces(s.samples, worker);
               reconstruction_seconds = seconds_since(start);
               // One thread: the triangulation has the other core.
-              thin = s.thin ? *s.thin : thinnest_wall(s.samples, spacing, convex_face_pairs(f), worker, 1);
+              thin = s.thin ? *s.thin
+                            : thinnest_wall_near(s.samples, spacing, convex_face_pairs(f), s.first_thinnest, worker);
               if (!abandoned && !triangulated) prepare_inside();
               return u;
             }).share();

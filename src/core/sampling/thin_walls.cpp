@@ -20,6 +20,12 @@ bool on_face(const Samples& s, std::size_t i) { return s.tag[i] == SampleTag::Fa
 
 bool on_edge(const Samples& s, std::size_t i) { return s.tag[i] == SampleTag::Edge || s.tag[i] == SampleTag::Ball; }
 
+// Parallel walls count with a sample up to 5 depths along the other wall (squared: 1 / 25).
+constexpr double kParallelSlope2 = 0.04;
+// So a parallel-wall radius r = depth / 2 comes from a sample up to sqrt(26) depths, 2 sqrt(26) r,
+// away: found with the reach 2 below when r <= below / kParallelReach.
+const double kParallelReach = std::sqrt(1.0 + 1.0 / kParallelSlope2);
+
 // Face samples, and edge samples where the solid is not convex.
 bool on_wall(const Samples& s, std::size_t i) { return on_face(s, i) || (on_edge(s, i) && s.edge_convex[i] != 1); }
 
@@ -31,8 +37,10 @@ namespace {
 // walls' samples and of the convex edges' samples built once.
 class WallMeter {
  public:
-  WallMeter(const Samples& s, double spacing, const std::vector<std::array<int, 2>>& wedges, double wedge_dot)
-      : s_(s), spacing_(spacing), wedge_dot_(wedge_dot), reach_(2.0 * spacing),
+  /// Balls smaller than `below` (at most the spacing) are looked for.
+  WallMeter(const Samples& s, double spacing, const std::vector<std::array<int, 2>>& wedges, double wedge_dot,
+            double below)
+      : s_(s), spacing_(spacing), wedge_dot_(wedge_dot), below_(std::min(below, spacing)), reach_(2.0 * below_),
         // A ball through q tangent at p lies on p's inner side: only the cells that meet the half
         // of the reach's box behind p's tangent plane are searched. Cells of 2/3 of the reach: on
         // NIST CTC 01 this took 0.23 s against 0.39 s with cells of the whole reach around p (one
@@ -49,7 +57,7 @@ class WallMeter {
   /// The samples measured, in order: face samples, and edge samples where the solid is not convex.
   const std::vector<int>& walls() const { return walls_; }
 
-  /// The radius at walls()[w], or infinity when no ball smaller than the spacing was found.
+  /// The radius at walls()[w], or infinity when no ball smaller than `below` was found.
   double radius(std::size_t w) const {
     const Samples& s = s_;
     const std::size_t i = static_cast<std::size_t>(walls_[w]);
@@ -81,11 +89,12 @@ class WallMeter {
         // ball through q overestimates by (lateral offset)^2 / (2 depth) when q is not opposite
         // p; farther along, q may be on a wall that only meets p's plane, as where a solid's
         // faces touch at a corner).
-        if (dot3(*n, s.normal[j]) < -0.95 && depth * depth >= 0.04 * (d2 - depth * depth)) radius = std::min(radius, 0.5 * depth);
+        if (dot3(*n, s.normal[j]) < -0.95 && depth * depth >= kParallelSlope2 * (d2 - depth * depth))
+          radius = std::min(radius, 0.5 * depth);
         return false;
       });
     }
-    return radius < spacing_ ? radius : std::numeric_limits<double>::infinity();
+    return radius < below_ ? radius : std::numeric_limits<double>::infinity();
   }
 
  private:
@@ -94,7 +103,7 @@ class WallMeter {
   }
 
   const Samples& s_;
-  double spacing_, wedge_dot_, reach_;
+  double spacing_, wedge_dot_, below_, reach_;
   PointGrid grid_, convex_;
   std::vector<int> walls_;
   std::vector<std::int64_t> wedge_;  // the wedges' face pairs in both orders, sorted
@@ -111,7 +120,7 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
   // samples and samples of concave and smooth edges (a slot's floor edges face its walls; a
   // concave edge sample has both faces' normals).
   std::vector<double> radii(s.size(), std::numeric_limits<double>::infinity());
-  const WallMeter meter(s, spacing, wedges, wedge_dot);
+  const WallMeter meter(s, spacing, wedges, wedge_dot, spacing);
   const std::vector<int>& walls = meter.walls();
   // Each sample on its own: half of the walls' samples on each of two cores (the edge samples
   // come first and are mostly not walls), only this one reporting.
@@ -142,7 +151,7 @@ std::vector<double> wall_radii(const Samples& s, double spacing, const std::vect
 
 bool any_thin_wall(const Samples& s, double spacing, const std::vector<std::array<int, 2>>& wedges, double wedge_dot,
                    const Progress& progress) {
-  const WallMeter meter(s, spacing, wedges, wedge_dot);
+  const WallMeter meter(s, spacing, wedges, wedge_dot, spacing);
   const std::size_t n = meter.walls().size();
   for (std::size_t w = 0; w < n; ++w) {
     if (w % 4096 == 0) report(progress, "thin walls", static_cast<double>(w) / n);
@@ -159,6 +168,28 @@ ThinWall thinnest_wall(const Samples& s, const std::vector<double>& radii) {
     if (radii[i] < w.radius) w.radius = radii[i], w.at = s.points[i];
   }
   return w;
+}
+
+ThinWall thinnest_wall_near(const Samples& s, double spacing, const std::vector<std::array<int, 2>>& wedges,
+                            double guess, const Progress& progress) {
+  // Balls below `below`, looked for within 2 below of each sample: every ball-rule radius r < below
+  // and every parallel-wall radius r <= below / kParallelReach is found, so the smallest found is
+  // the smallest there is when it is that small. Else look again, as far as it says.
+  double below = std::min(spacing, 1.5 * guess);
+  for (;;) {
+    const WallMeter meter(s, spacing, wedges, 1.0, below);
+    const std::vector<int>& walls = meter.walls();
+    ThinWall w;
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+      if (k % 4096 == 0) report(progress, "thin walls", static_cast<double>(k) / walls.size());
+      const double r = meter.radius(k);
+      if (!(r < std::numeric_limits<double>::infinity())) continue;
+      ++w.samples;
+      if (r < w.radius) w.radius = r, w.at = s.points[static_cast<std::size_t>(walls[k])];
+    }
+    if (below >= spacing || w.radius * kParallelReach <= below) return w;
+    below = std::min(spacing, w.radius < below ? w.radius * kParallelReach : 4.0 * below);
+  }
 }
 
 }  // namespace cadmedial

@@ -57,6 +57,31 @@ TEST(ThinWalls, AWedgeIsNotAWallNearItsConvexEdge) {
   EXPECT_LT(w.radius, 0.5);
 }
 
+// The pipeline's search from the uniform pass's thinnest wall finds thinnest_wall's wall whatever
+// the guess: too small (it widens), about right, or larger than the spacing. A block with a thin
+// rib, an L block with thin arms and a plate with holes, sampled at half the spacing (as a refined
+// sampling is finer than the spacing).
+TEST(ThinWalls, TheSearchFromAGuessFindsTheSameWall) {
+  struct Case {
+    TopoDS_Solid solid;
+    double spacing;
+  };
+  const Case cases[] = {{test::make_block_with_rib(20, 16, 4, 0.6, 5), 1.0},
+                        {test::make_l_block(12, 1.2, 6), 1.5},
+                        {test::make_plate_with_holes(20, 20, 1.5, 3, 3, 1.5, false), 2.0}};
+  for (const Case& c : cases) {
+    const Features f = classify_features(c.solid);
+    const Samples samples = sample_solid(c.solid, f, c.spacing * 0.5);
+    const ThinWall full = thinnest_wall(samples, c.spacing, convex_face_pairs(f));
+    ASSERT_LT(full.radius, c.spacing);
+    for (double guess : {1e-3, 0.3 * full.radius, full.radius, 3 * full.radius, 10 * c.spacing}) {
+      const ThinWall near = thinnest_wall_near(samples, c.spacing, convex_face_pairs(f), guess);
+      EXPECT_EQ(near.radius, full.radius) << guess;
+      EXPECT_EQ(near.at, full.at) << guess;
+    }
+  }
+}
+
 TEST(ThinWalls, WithOneSpacingThePipelineWarnsAndReportsTheThickness) {
   ComputeParams params;
   params.sampling.spacing = 1.0;
