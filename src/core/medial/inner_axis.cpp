@@ -302,7 +302,7 @@ class ReconstructionSide {
   /// its cell's, so the nearest mesh point is nearly always on their triangles. (A search of the
   /// whole mesh for the rest settled 5 of 339 such vertices over the 31 parts of
   /// ../shared/data/models at 20k samples, for 0.03-0.1 s of tree building each time: they go to
-  /// the exact classifier instead, at a millisecond each.)
+  /// the exact classifier instead, at up to 0.4 ms each.)
   int side_near(const Point3& x, const std::array<int, 4>& near) const {
     const K::Point_3 q(x[0], x[1], x[2]);
     double best = std::numeric_limits<double>::infinity();
@@ -770,7 +770,8 @@ std::vector<std::uint8_t> label_inside(MedialComplex& mc, const Samples& samples
     }
     unsure.swap(still);
   }
-  // The exact classifier takes about a millisecond per point: in batches, between progress checks.
+  // The exact classifier takes up to 0.4 ms a point on a core (SOT23's revolved faces; 2 to 6 ms
+  // where its rays leave a point to OpenCASCADE's classifier): in batches, between progress checks.
   constexpr size_t kBatch = 256;
   for (size_t b = 0; b < unsure.size(); b += kBatch) {
     report(progress, "inner", 0.5 + 0.2 * static_cast<double>(b) / unsure.size());
