@@ -12,6 +12,7 @@
 #include <Bnd_Box.hxx>
 #include <Extrema_ExtPC.hxx>
 #include <IntCurvesFace_Intersector.hxx>
+#include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -190,15 +191,19 @@ RayClassifier::Answer RayClassifier::cast(const std::array<double, 3>& p, const 
 }
 
 RayClassifier::Answer RayClassifier::classify(const std::array<double, 3>& p) {
-  if (on_edge(p)) return Answer::Inside;
-  int inside = 0, outside = 0;
-  for (const auto& d : directions()) {
-    const Answer a = cast(p, d);
-    inside += a == Answer::Inside;
-    outside += a == Answer::Outside;
-    if (inside && outside) return Answer::Unknown;  // a ray missed a crossing: ask OpenCASCADE
-    if (inside == 2) return Answer::Inside;
-    if (outside == 2) return Answer::Outside;
+  // An OpenCASCADE failure on a face or an edge leaves the point to the caller's classifier.
+  try {
+    if (on_edge(p)) return Answer::Inside;
+    int inside = 0, outside = 0;
+    for (const auto& d : directions()) {
+      const Answer a = cast(p, d);
+      inside += a == Answer::Inside;
+      outside += a == Answer::Outside;
+      if (inside && outside) return Answer::Unknown;  // a ray missed a crossing: ask OpenCASCADE
+      if (inside == 2) return Answer::Inside;
+      if (outside == 2) return Answer::Outside;
+    }
+  } catch (const Standard_Failure&) {
   }
   return Answer::Unknown;
 }

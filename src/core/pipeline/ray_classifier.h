@@ -36,7 +36,8 @@ class RayClassifier {
 
   enum class Answer { Outside, Inside, Unknown };
   /// On an edge or a vertex (within its tolerance) is inside. Otherwise two clean rays that agree
-  /// decide; Unknown when two disagree or fewer than two of the directions tried are clean.
+  /// decide; Unknown when two disagree, fewer than two of the directions tried are clean, or
+  /// OpenCASCADE fails on a face or an edge.
   Answer classify(const std::array<double, 3>& p);
 
  private:
