@@ -175,7 +175,7 @@ ThinWall thinnest_wall_near(const Samples& s, double spacing, const std::vector<
   // Balls below `below`, looked for within 2 below of each sample: every ball-rule radius r < below
   // and every parallel-wall radius r <= below / kParallelReach is found, so the smallest found is
   // the smallest there is when it is that small. Else look again, as far as it says.
-  double below = std::min(spacing, 1.5 * guess);
+  double below = guess > 0 ? std::min(spacing, 1.5 * guess) : spacing;  // it only grows from there
   for (;;) {
     const WallMeter meter(s, spacing, wedges, 1.0, below);
     const std::vector<int>& walls = meter.walls();

@@ -74,7 +74,7 @@ TEST(ThinWalls, TheSearchFromAGuessFindsTheSameWall) {
     const Samples samples = sample_solid(c.solid, f, c.spacing * 0.5);
     const ThinWall full = thinnest_wall(samples, c.spacing, convex_face_pairs(f));
     ASSERT_LT(full.radius, c.spacing);
-    for (double guess : {1e-3, 0.3 * full.radius, full.radius, 3 * full.radius, 10 * c.spacing}) {
+    for (double guess : {0.0, 1e-3, 0.3 * full.radius, full.radius, 3 * full.radius, 10 * c.spacing}) {
       const ThinWall near = thinnest_wall_near(samples, c.spacing, convex_face_pairs(f), guess);
       EXPECT_EQ(near.radius, full.radius) << guess;
       EXPECT_EQ(near.at, full.at) << guess;
