@@ -166,10 +166,14 @@ RayClassifier::Answer RayClassifier::cast(const std::array<double, 3>& p, const 
   for (const auto& [t_in, f] : order_) {
     if (t_in > first + margin_) break;  // boxes nearest first: no later face crosses sooner
     IntCurvesFace_Intersector& x = intersector(f);
-    x.Perform(line, -tol_, first + margin_);
+    // A little longer both ways, as OpenCASCADE's classifier does: on a face intersected through
+    // a polyhedron, a crossing near an end of the segment can be missed.
+    const double extra = std::max(10 * tol_, 0.01 * first);
+    x.Perform(line, -extra, first + margin_ + extra);
     if (!x.IsDone() || (x.NbPnt() == 0 && x.IsParallel())) return Answer::Unknown;
     for (int i = 1; i <= x.NbPnt(); ++i) {
       const double w = x.WParameter(i);
+      if (w < -tol_) continue;                         // behind the point
       if (std::abs(w) <= tol_) return Answer::Inside;  // on the boundary
       const IntCurveSurface_TransitionOnCurve tr = x.Transition(i);
       crossings.push_back({w, x.State(i) == TopAbs_IN && tr != IntCurveSurface_Tangent, tr == IntCurveSurface_Out, f,
