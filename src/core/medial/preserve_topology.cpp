@@ -33,8 +33,11 @@ struct EdgeIncidence {
   std::vector<std::uint64_t> key;  ///< per edge, its two corners
 };
 
+// Only the face sides for which keep_side(slot, a, b) holds are indexed (face_edge -1 for the
+// others).
+template <class KeepSide>
 EdgeIncidence edge_incidence(const MedialComplex& mc, const std::vector<int>& faces,
-                             const std::vector<std::array<int, 3>>& lone) {
+                             const std::vector<std::array<int, 3>>& lone, KeepSide&& keep_side) {
   EdgeIncidence g;
   struct Entry {
     std::uint64_t key;
@@ -48,7 +51,8 @@ EdgeIncidence edge_incidence(const MedialComplex& mc, const std::vector<int>& fa
   }
   for (size_t i = 0; i < faces.size(); ++i) {
     for_each_side(mc, faces[i], [&](int k, int a, int b) {
-      entries.push_back({edge_key(a, b), static_cast<int>(i), g.face_start.back() + k});
+      if (keep_side(static_cast<int>(i), a, b))
+        entries.push_back({edge_key(a, b), static_cast<int>(i), g.face_start.back() + k});
     });
     g.face_start.push_back(g.face_start.back() + (mc.start[faces[i] + 1] - mc.start[faces[i]]));
   }
@@ -83,7 +87,7 @@ EdgeIncidence edge_incidence(const MedialComplex& mc, const std::vector<int>& fa
       std::lower_bound(bucket_start.begin(), bucket_start.end(), bucket_start.back() / 2) - bucket_start.begin());
   on_two_cores([&] { sort_buckets(0, std::min(mid, buckets)); },
                [&](const std::atomic<bool>&) { sort_buckets(std::min(mid, buckets), buckets); });
-  g.face_edge.resize(g.face_start.back());
+  g.face_edge.assign(g.face_start.back(), -1);
   g.edge_face.reserve(entries.size());
   for (size_t k = 0; k < entries.size(); ++k) {
     if (k == 0 || entries[k].key != entries[k - 1].key) {
@@ -99,10 +103,12 @@ EdgeIncidence edge_incidence(const MedialComplex& mc, const std::vector<int>& fa
 }
 
 // Edges no face holds any more but which no collapse removed either stay as 1-cells. Those with a
-// free end collapse in turn (with the end); what is left carries the topology.
+// free end collapse in turn (with the end); what is left carries the topology. A pinned(node) is
+// the corner of a face that stays, whose sides g may leave out: it never has a free end.
+template <class Pinned>
 std::vector<std::array<int, 2>> essential_bare_edges(const EdgeIncidence& g, const std::vector<int>& count,
                                                      const std::vector<char>& removed,
-                                                     const std::vector<char>& kept_segment) {
+                                                     const std::vector<char>& kept_segment, Pinned&& pinned) {
   const size_t ne = g.key.size();
   // Per corner (indexed by node from the smallest, a sample's negative number, up): the live
   // edges at it, and the bare ones (in edge order). Flat arrays, not a sort of a million ends.
@@ -130,6 +136,8 @@ std::vector<std::array<int, 2>> essential_bare_edges(const EdgeIncidence& g, con
     for (size_t e = 0; e < ne; ++e)
       if (bare[e]) bare_at[fill[key_low(g.key[e]) - lo]++] = static_cast<int>(e), bare_at[fill[key_high(g.key[e]) - lo]++] = static_cast<int>(e);
   }
+  for (size_t r = 0; r < span; ++r)
+    if (pinned(static_cast<int>(r) + lo)) degree[r] += 2;
   std::vector<int> stack;
   for (size_t r = 0; r < span; ++r)
     if (degree[r] == 1) stack.push_back(static_cast<int>(r));
@@ -155,7 +163,21 @@ std::vector<std::array<int, 2>> essential_bare_edges(const EdgeIncidence& g, con
 
 AxisCells collapse_fillers(const MedialComplex& mc, const std::vector<int>& faces,
                            const std::vector<std::array<int, 3>>& segments, MedialAxisStats& st) {
-  const EdgeIncidence g = edge_incidence(mc, faces, segments);
+  // Only the sides of filler faces and the segments can come free or bare: the incidence holds
+  // those, and the other faces' sides between two such corners (the only ones that can be the
+  // same edges). The selected faces' corners are pinned.
+  int lo = 0, hi = -1;
+  for (int f : faces)
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) lo = std::min(lo, mc.nodes[k]), hi = std::max(hi, mc.nodes[k]);
+  for (const auto& sg : segments) lo = std::min({lo, sg[0], sg[1]}), hi = std::max({hi, sg[0], sg[1]});
+  // 1: a filler's or a segment's corner; 2: a selected face's; 3: both.
+  std::vector<std::uint8_t> role(static_cast<std::size_t>(hi - lo + 1), 0);
+  for (int f : faces)
+    for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) role[mc.nodes[k] - lo] |= mc.filler[f] ? 1 : 2;
+  for (const auto& sg : segments) role[sg[0] - lo] |= 1, role[sg[1] - lo] |= 1;
+  const EdgeIncidence g = edge_incidence(mc, faces, segments, [&](int slot, int a, int b) {
+    return mc.filler[faces[slot]] || ((role[a - lo] & 1) && (role[b - lo] & 1));
+  });
   const size_t ne = g.key.size();
   // A segment of a selected facet is axis proper: it stays even with a free end.
   std::vector<char> kept_segment(ne, 0);
@@ -193,7 +215,8 @@ AxisCells collapse_fillers(const MedialComplex& mc, const std::vector<int>& face
   AxisCells left;
   for (size_t i = 0; i < faces.size(); ++i)
     if (alive[i]) left.faces.push_back(faces[i]);
-  left.edges = essential_bare_edges(g, count, removed, kept_segment);
+  left.edges = essential_bare_edges(g, count, removed, kept_segment,
+                                    [&](int node) { return node >= lo && node <= hi && (role[node - lo] & 2); });
   return left;
 }
 
