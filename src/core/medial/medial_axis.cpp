@@ -11,6 +11,7 @@
 #include "inner_axis.h"
 #include "number_cells.h"
 #include "preserve_topology.h"
+#include "sample_votes.h"
 #include "select_facets.h"
 #include "triangulate.h"
 #include "../two_cores.h"
@@ -54,16 +55,15 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
                });
   const Selection& sel = *selection;
   {
-    // The circumcentres of half the cells on each thread before it selects (the selection needs
-    // only their samples and neighbours).
-    const std::size_t nc = mc.num_cells();
-    select_facets(sel, mc, st, progress, !params.plain_medial, [&samples, &mc, nc](int part) {
-      if (part == 0)
-        cell_centers(samples.points, mc, 0, nc / 2);
-      else
-        cell_centers(samples.points, mc, nc / 2, nc);
+    // The circumcentres, and which lie far outside (the selection builds no facet at those), half
+    // the cells on each core.
+    const auto [lo, hi] = bounding_box(samples.points);
+    on_two_halves(mc.num_cells(), [&](int, std::size_t begin, std::size_t end) {
+      cell_centers(samples.points, mc, begin, end);
+      mark_far_outside(samples, lo, hi, mc, begin, end);
     });
   }
+  select_facets(sel, mc, st, progress, !params.plain_medial);
   settle_flat_cells(samples.points, mc);
   st.timings.push_back({"selection", seconds_since(t0)});
 

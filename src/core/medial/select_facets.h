@@ -2,7 +2,6 @@
 // select (4.2.6 lines 5-8); MEDIAL's pole umbrellas for the ablation.
 #pragma once
 
-#include <functional>
 #include <vector>
 
 #include "../progress.h"
@@ -38,12 +37,11 @@ class Selection {
 Umbrellas umbrellas_from_poles(const Delaunay& dt, std::size_t n);
 
 /// The bounded Voronoi facets dual to selected Delaunay edges, added to mc; with `fillers`, those
-/// of the other edges too, marked as fillers.
-/// Needs mc's cells numbered (number_cells). Runs on two threads unless `threads` is 1 (the same
-/// faces in the same order); only the calling one reports progress. `also(0)` runs on this thread
-/// and `also(1)` on the other before they select (each half of the circumcentres, say): it must
-/// not touch what the selection reads (mc's cell samples and neighbours).
+/// of the other edges too, marked as fillers. Facets with a corner far outside (mc.far_outside)
+/// are not built; their other corners are marked in mc.unbuilt_use.
+/// Needs mc's cells numbered (number_cells) and far_outside set. Runs on two threads unless
+/// `threads` is 1 (the same faces in the same order); only the calling one reports progress.
 void select_facets(const Selection& sel, MedialComplex& mc, MedialAxisStats& st, const Progress& progress,
-                   bool fillers, const std::function<void(int part)>& also = {}, int threads = 2);
+                   bool fillers, int threads = 2);
 
 }  // namespace cadmedial::internal

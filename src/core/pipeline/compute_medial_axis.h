@@ -22,7 +22,9 @@ struct SolidStats {
   std::size_t concave_edges = 0;
   std::size_t smooth_edges = 0;
   std::size_t nonconcave_corners = 0;
-  std::size_t dropped_faces = 0;   ///< selected faces outside the solid or in stray pieces
+  /// selected faces outside the solid or in stray pieces, but for those with a vertex far outside
+  /// (beyond the samples' box), which are not built
+  std::size_t dropped_faces = 0;
   std::size_t components = 0;      ///< pieces of the inner axis before stray ones were dropped
   std::size_t filler_faces = 0;    ///< unselected Voronoi facets kept for the axis's topology
   std::size_t edges = 0;           ///< output edges: 1-D parts of the axis that no face carries

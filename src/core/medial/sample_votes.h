@@ -1,0 +1,27 @@
+// Internal to medial/: which side of the boundary a Voronoi vertex lies on, as its cell's samples
+// see it (their tangent planes), and the vertices far outside that no later step can bring in.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "../sampling/samples.h"
+#include "delaunay_3.h"
+
+namespace cadmedial::internal {
+
+/// Sample s's vote on point x: 1 inside, -1 outside, 0 none (see the definition).
+int vote(const Samples& samples, int s, const Point3& x);
+
+/// Whether the cell's Voronoi vertex has both an inside and an outside vote among its samples.
+bool straddles(const MedialComplex& mc, const Samples& samples, int cell);
+
+/// Sets mc.far_outside for the cells with ids in [begin, end) (their centres and flat flags set):
+/// 1 where the Voronoi vertex lies beyond the samples' box [lo, hi] or its ball is larger than the
+/// box's diagonal, by a margin, and neither settle_flat_cells (flat cells) nor fill_sheet_holes
+/// (straddling ones) can move it. label_inside calls such a vertex outside, whatever else holds,
+/// so select_facets need not build the facets at it.
+void mark_far_outside(const Samples& samples, const Point3& lo, const Point3& hi, MedialComplex& mc,
+                      std::size_t begin, std::size_t end);
+
+}  // namespace cadmedial::internal
