@@ -151,10 +151,16 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
   for (const Found& found : half)
     for (const auto& [x, y] : found.sides) parent[find_root(parent, x)] = find_root(parent, y);
   // Per group (its root): the selected facets with an outside corner; a facet with corners in two
-  // groups spoils both. (The facets at a vertex far outside were not built: they join and spoil
-  // nothing. Spoiling the groups at their other corners cost NIST FTC 08 a hole at 20k samples.)
+  // groups spoils both. A selected facet that was not built has a corner far outside, which is in
+  // no group: it spoils the groups at its other corners. (Without this, a group on brlcad's c.stp
+  // was filled at 20k samples and left a vertex outside the solid.)
   std::vector<std::pair<int, int>> group_face;
   std::vector<char> spoiled(nc, 0);
+  for (std::size_t c = 0; c < mc.unbuilt_use.size(); ++c) {
+    if (mc.unbuilt_use[c] != 2) continue;
+    const int r = mc.rep.empty() ? static_cast<int>(c) : mc.rep[c];
+    if (straddling[r]) spoiled[find_root(parent, r)] = 1;
+  }
   for (const Found& found : half)
     for (const int f : found.faces) {
       int root = -1;
