@@ -1,0 +1,87 @@
+// The selection builds no Voronoi facet at a vertex far outside (mark_far_outside): beyond the
+// samples' box or with a ball larger than its diagonal. Such a vertex must lie outside the solid.
+// CGAL's headers before OpenCASCADE's (its Handle macro breaks them).
+#include "core/medial/delaunay_3.h"
+#include "core/medial/number_cells.h"
+#include "core/medial/sample_votes.h"
+#include "core/medial/triangulate.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "core/io/read_shape.h"
+#include "core/medial/geometry_3.h"
+#include "core/pipeline/compute_medial_axis.h"
+#include "core/pipeline/exact_inside_test.h"
+#include "support/engine_run.h"
+#include "support/solids.h"
+
+namespace cadmedial::test {
+namespace {
+
+using namespace internal;
+
+struct FarCells {
+  std::vector<Point3> centers;  ///< of the cells marked far outside
+  std::size_t cells = 0;
+  Point3 lo{}, hi{};
+};
+
+FarCells far_cells(const TopoDS_Shape& shape, int target_samples) {
+  SamplingParams params;
+  params.target_samples = target_samples;
+  const Samples samples = sample_shape(shape, params).front();
+  Delaunay dt;
+  std::vector<Vertex> handle;
+  std::vector<int> rank;
+  triangulate(samples, dt, handle, rank, {}, "delaunay");
+  MedialComplex mc;
+  number_cells(dt, rank, mc);
+  FarCells out;
+  out.cells = mc.num_cells();
+  std::tie(out.lo, out.hi) = bounding_box(samples.points);
+  cell_centers(samples.points, mc, 0, mc.num_cells());
+  mark_far_outside(samples, out.lo, out.hi, mc, 0, mc.num_cells());
+  for (std::size_t c = 0; c < mc.num_cells(); ++c)
+    if (mc.far_outside[c]) out.centers.push_back(mc.centers[c]);
+  return out;
+}
+
+void expect_outside(const TopoDS_Solid& solid, const FarCells& far) {
+  ASSERT_FALSE(far.centers.empty()) << "no cell far outside among " << far.cells;
+  const double diag = norm(sub(far.hi, far.lo));
+  // Up to about 2,000 of them, spread over the cell order (space), against the exact solid.
+  std::vector<Point3> probe;
+  for (std::size_t k = 0; k < far.centers.size(); k += std::max<std::size_t>(1, far.centers.size() / 2000))
+    probe.push_back(far.centers[k]);
+  const InsideTest inside = exact_inside_test(solid, 1e-7 * diag);
+  const std::vector<std::uint8_t> in = inside(probe);
+  std::size_t wrong = 0;
+  for (std::uint8_t v : in) wrong += v;
+  EXPECT_EQ(wrong, 0u) << "of " << probe.size() << " far-outside vertices tested";
+}
+
+TEST(FarOutside, MarkedVerticesLieOutsideATorus) {
+  const TopoDS_Solid torus = make_torus(5, 1.5);
+  expect_outside(torus, far_cells(torus, 20000));
+}
+
+TEST(FarOutside, MarkedVerticesLieOutsideACylinder) {
+  const TopoDS_Solid cylinder = make_cylinder(2, 8);
+  expect_outside(cylinder, far_cells(cylinder, 20000));
+}
+
+TEST(FarOutside, MarkedVerticesLieOutsideNistFtc11) {
+  const std::string path = model_path("nist/nist_ftc_11_asme1_rb.stp");
+  if (path.empty()) GTEST_SKIP() << "../shared/data/models is not here";
+  const TopoDS_Shape shape = read_shape_file(path);
+  const std::vector<TopoDS_Solid> solids = extract_solids(shape);
+  ASSERT_EQ(solids.size(), 1u);
+  expect_outside(solids.front(), far_cells(shape, 20000));
+}
+
+}  // namespace
+}  // namespace cadmedial::test
