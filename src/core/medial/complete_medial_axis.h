@@ -13,8 +13,10 @@
 
 namespace cadmedial::internal {
 
-void complete_convex_edges(const Delaunay& dt, const std::vector<Vertex>& handle, const Samples& samples,
-                           MedialComplex& mc, MedialAxisStats& st);
+/// Reads mc's cells (numbered, centres set) and the triangulation's vertex handles (null for a
+/// sample that coincides with another).
+void complete_convex_edges(const std::vector<Vertex>& handle, const Samples& samples, MedialComplex& mc,
+                           MedialAxisStats& st);
 void complete_corners(const Delaunay& dt, const std::vector<Vertex>& handle, const Samples& samples,
                       const Selection& sel, MedialComplex& mc, MedialAxisStats& st);
 /// mc's star_start and star_cells: the Voronoi vertices (incident cells, by id) of each sample

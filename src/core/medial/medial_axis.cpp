@@ -73,7 +73,7 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
   on_two_cores(
       [&] {
         if (params.plain_medial) return;
-        complete_convex_edges(dt, handle, samples, mc, st);
+        complete_convex_edges(handle, samples, mc, st);
         complete_corners(dt, handle, samples, sel, mc, st);
       },
       [&](const std::atomic<bool>&) {
