@@ -696,11 +696,7 @@ std::vector<std::uint8_t> label_inside(MedialComplex& mc, const Samples& samples
       used[id] = std::max(used[id], used_upper[id]);
       if (!used[id]) continue;
       const Point3& x = mc.centers[id];
-      // Written so that a NaN centre (a flat cell) is beyond too: GMP aborts on NaN in CGAL's
-      // exact fallback.
-      bool beyond = !(mc.radii[id] <= diag);
-      for (int k = 0; k < 3; ++k) beyond = beyond || !(x[k] >= lo[k] && x[k] <= hi[k]);
-      if (beyond) continue;  // label 0
+      if (beyond_box(x, mc.radii[id], lo, hi, diag, 0.0)) continue;  // label 0
       int in = 0, out = 0;
       for (int j = 0; j < 4; ++j) {
         const int v = vote(samples, mc.cell_samples[id][j], x);

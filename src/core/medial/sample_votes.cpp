@@ -49,9 +49,7 @@ void mark_far_outside(const Samples& samples, const Point3& lo, const Point3& hi
   // diagonal) beyond too.
   const double diag = norm(sub(hi, lo)), margin = 1e-6 * diag;
   for (std::size_t id = begin; id < end; ++id) {
-    const Point3& x = mc.centers[id];
-    bool far = mc.radii[id] > diag + margin;
-    for (int k = 0; k < 3; ++k) far = far || x[k] < lo[k] - margin || x[k] > hi[k] + margin;
+    const bool far = beyond_box(mc.centers[id], mc.radii[id], lo, hi, diag, margin);
     mc.far_outside[id] = far && !mc.flat[id] && !straddles(mc, samples, static_cast<int>(id));
   }
 }

@@ -13,6 +13,15 @@ namespace cadmedial::internal {
 /// Sample s's vote on point x: 1 inside, -1 outside, 0 none (see the definition).
 int vote(const Samples& samples, int s, const Point3& x);
 
+/// Whether a Voronoi vertex at x, with ball radius r, lies beyond the samples' box [lo, hi] (of
+/// diagonal `diag`) by more than `margin` or has a ball larger than diag + margin. Written so that
+/// a NaN centre or radius counts as beyond: GMP aborts on NaN in CGAL's exact fallback.
+inline bool beyond_box(const Point3& x, double r, const Point3& lo, const Point3& hi, double diag, double margin) {
+  bool beyond = !(r <= diag + margin);
+  for (int k = 0; k < 3; ++k) beyond = beyond || !(x[k] >= lo[k] - margin && x[k] <= hi[k] + margin);
+  return beyond;
+}
+
 /// Whether the cell's Voronoi vertex has both an inside and an outside vote among its samples.
 bool straddles(const MedialComplex& mc, const Samples& samples, int cell);
 
