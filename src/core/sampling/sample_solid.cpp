@@ -974,6 +974,7 @@ SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) 
     m.sharp_edge_length += len;
     if (k != EdgeKind::Concave) m.convex_edge_length += len;
     m.sharp_edges.push_back({len, kappa, k != EdgeKind::Concave});
+    m.sharp_edges.back().edge = e;
     for (int f : features.edge_faces[e])
       if (f >= 0 && f < static_cast<int>(m.faces.size()))
         (k == EdgeKind::Concave ? m.faces[f].concave_edges : m.faces[f].convex_edges) += len;
@@ -981,8 +982,11 @@ SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) 
   return m;
 }
 
-double estimate_samples(const SolidMeasure& m, double spacing) {
-  const SampleSpacing sp = sample_spacing(spacing);
+namespace {
+
+// The samples of a face's interior at spacing r (as curvature leaves it) with triplet legs
+// `triplet` (sample_solid's rule; estimate_samples).
+double face_samples(const SolidMeasure::Piece& f, double r, double triplet) {
   // Thinning keeps samples at least r apart, which packs about one per 1.47 r^2 (a 100 mm cube at
   // spacing 1 gets 39,168 face samples on the 57,600 mm^2 away from its edges). None lie within
   // 1.05 triplet legs and r / 2 of a convex edge (its triplets are there) or about r / 2 of a
@@ -990,21 +994,113 @@ double estimate_samples(const SolidMeasure& m, double spacing) {
   // uniform density, as before, a small curved face between convex edges was estimated at 260
   // samples where it got 29, on the Y-rod mount at spacing 3.4.)
   constexpr double kAreaPerSample = 1.47;
+  const double strips = f.convex_edges * (1.05 * triplet + 0.5 * r) + f.concave_edges * 0.5 * r;
+  return std::max(0.0, f.size - strips) / (kAreaPerSample * r * r);
+}
+
+// Adds the samples of a sharp edge and, on a convex one, of its triplets at spacing sp to n.
+void add_edge_samples(const SolidMeasure::Piece& e, const SampleSpacing& sp, double& n) {
+  double h = sp.edge;
+  if (e.curvature > 0) h = std::max(std::min(h, sp.max_turn_rad / e.curvature), 0.25 * sp.min_face);
+  n += e.size / h;
+  // A convex edge's samples come with two triplet points, which keep half a leg apart (a curved
+  // edge's samples can be closer).
+  if (e.convex) n += 2.0 * e.size / std::max(h, 0.5 * sp.triplet);
+}
+
+}  // namespace
+
+double estimate_samples(const SolidMeasure& m, double spacing) {
+  const SampleSpacing sp = sample_spacing(spacing);
   double faces = 0, edges = 0;
-  for (const auto& f : m.faces) {
-    const double r = sp.face_at(f.curvature);
-    const double strips = f.convex_edges * (1.05 * sp.triplet + 0.5 * r) + f.concave_edges * 0.5 * r;
-    faces += std::max(0.0, f.size - strips) / (kAreaPerSample * r * r);
-  }
-  for (const auto& e : m.sharp_edges) {
-    double h = sp.edge;
-    if (e.curvature > 0) h = std::max(std::min(h, sp.max_turn_rad / e.curvature), 0.25 * sp.min_face);
-    edges += e.size / h;
-    // A convex edge's samples come with two triplet points, which keep half a leg apart (a
-    // curved edge's samples can be closer).
-    if (e.convex) edges += 2.0 * e.size / std::max(h, 0.5 * sp.triplet);
-  }
+  for (const auto& f : m.faces) faces += face_samples(f, sp.face_at(f.curvature), sp.triplet);
+  for (const auto& e : m.sharp_edges) add_edge_samples(e, sp, edges);
   return faces + edges;
+}
+
+double estimate_samples(const SolidMeasure& m, const Features& features, const SpacingField& field,
+                        const Samples& first) {
+  // The finest a face is sampled: its candidates come every half spacing, a lattice cell cut at
+  // most 8 x 8, and thinning at r keeps one per 1.47 r^2: at most 16^2 / 1.47 per spacing^2.
+  const double finest = 16.0 / std::sqrt(1.47);
+  const SampleSpacing sp = sample_spacing(field.uniform());
+  const std::size_t nf = m.faces.size(), ne = features.edge_kind.size();
+  double corners = 0, faces = 0;
+  // Per face: its interior samples in `first`, what they stand for, and the local spacing at the
+  // samples on and around it (its interior, its triplets, its edges' samples).
+  std::vector<int> interior(nf, 0), near_count(nf, 0);
+  std::vector<double> stand_for(nf, 0.0), near_sum(nf, 0.0);
+  auto near = [&](int f, double h) {
+    if (f < 0 || f >= static_cast<int>(nf)) return;
+    near_sum[f] += h;
+    ++near_count[f];
+  };
+  // Per edge: its samples in `first`, the chords between them (in order along it), the last one.
+  std::vector<int> on_edge(ne, 0), last(ne, -1);
+  std::vector<double> chords(ne, 0.0);
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    const SampleTag tag = first.tag[i];
+    const double h = field.at(first.points[i]);
+    if (tag == SampleTag::Corner || tag == SampleTag::Ball) {
+      corners += 1;
+    } else if (tag == SampleTag::Face) {
+      const double own = sp.face_at(first.curvature[i]);
+      const double ratio = own / std::min(own, h);
+      const double n = std::min(finest * finest, ratio * ratio);
+      const int f = first.face[i];
+      if (f < 0 || f >= static_cast<int>(nf)) {
+        faces += n;
+        continue;
+      }
+      ++interior[f];
+      stand_for[f] += n;
+      near(f, h);
+    } else if (tag == SampleTag::Triplet) {
+      near(first.face[i], h);
+    } else if (tag == SampleTag::Edge) {
+      const int e = first.edge[i];
+      if (e < 0 || e >= static_cast<int>(ne)) continue;
+      ++on_edge[e];
+      if (last[e] >= 0) chords[e] += std::sqrt(distance2(first.points[i], first.points[last[e]]));
+      last[e] = static_cast<int>(i);
+      const auto& [a, b] = features.edge_faces[e];
+      near(a, h);
+      if (b != a) near(b, h);
+    }
+  }
+  // A face with a few interior samples or none is narrow or small at the uniform spacing: they
+  // stand for too little where the strips along its edges, which have no interior samples,
+  // narrow at the finer spacing. By its area then, at the mean spacing around it.
+  constexpr int kFewSamples = 8;
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (interior[f] >= kFewSamples) {
+      faces += stand_for[f];
+      continue;
+    }
+    const double k = m.faces[f].curvature;
+    const double around = near_count[f] > 0 ? near_sum[f] / near_count[f] : field.on_face(static_cast<int>(f));
+    const double local = std::max(around, sp.face_at(k) / finest);
+    // Curvature refines down to the uniform spacing's floor (try_face_candidate).
+    const double r = k > 0 ? std::clamp(sp.max_turn_rad / k, std::min(sp.min_face, local), local) : local;
+    faces += std::max(stand_for[f], face_samples(m.faces[f], r, 0.5 * local));
+  }
+  // The sampler spaces an edge evenly by the smallest spacing on it: a sharp edge by its length
+  // (with its triplets), any other by its samples in `first` and their gap (finer than the
+  // spacing where the edge curves).
+  double edges = 0;
+  std::vector<char> sharp(ne, 0);
+  for (const auto& e : m.sharp_edges) {
+    if (e.edge < 0 || e.edge >= static_cast<int>(ne)) continue;
+    sharp[e.edge] = 1;
+    add_edge_samples(e, sample_spacing(field.on_edge(e.edge)), edges);
+  }
+  for (std::size_t e = 0; e < ne; ++e) {
+    if (sharp[e] || on_edge[e] < 2) continue;
+    const double gap = chords[e] / (on_edge[e] - 1), length = gap * (on_edge[e] + 1);
+    const double h = std::min(gap, sample_spacing(field.on_edge(static_cast<int>(e))).face);
+    edges += std::max<double>(on_edge[e], length / h - 1);
+  }
+  return corners + faces + edges;
 }
 
 }  // namespace cadmedial

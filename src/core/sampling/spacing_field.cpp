@@ -1,7 +1,5 @@
 #include "spacing_field.h"
 
-#include "sample_solid.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -57,23 +55,6 @@ void SpacingField::measure_on(const Samples& s, const std::vector<std::array<int
     for (int f : edge_faces[e])
       if (f >= 0 && f < static_cast<int>(face_.size())) face_[f] = std::min(face_[f], h);
   }
-}
-
-double refined_sample_count(const Samples& first, const SpacingField& field) {
-  if (field.is_uniform()) return static_cast<double>(first.size());
-  const SampleSpacing sp = sample_spacing(field.uniform());
-  double n = 0;
-  for (std::size_t i = 0; i < first.size(); ++i) {
-    const SampleTag tag = first.tag[i];
-    if (tag == SampleTag::Corner || tag == SampleTag::Ball) {
-      n += 1;
-      continue;
-    }
-    const double own = sp.face_at(first.curvature[i]);
-    const double ratio = own / std::min(own, field.at(first.points[i]));
-    n += tag == SampleTag::Face ? std::min(64.0, ratio * ratio) : ratio;
-  }
-  return n;
 }
 
 SpacingField thin_wall_spacing(const Samples& first, const std::vector<double>& radii, double spacing,

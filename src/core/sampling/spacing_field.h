@@ -46,14 +46,4 @@ class SpacingField {
 SpacingField thin_wall_spacing(const Samples& first, const std::vector<double>& radii, double spacing,
                                double per_radius, double max_refine, double gradation);
 
-/// About how many samples a sampling with `field` takes, from a uniform sampling `first` of the
-/// same solid at field.uniform(): each face sample stands for (own / local)^2 (at most 8^2, the
-/// sampler's finest cut of a lattice cell), each edge or triplet sample for own / local, each
-/// corner for one, where `own` is the sample's spacing (finer than uniform where the surface
-/// curves). Faces narrower than the spacing have no face samples to stand for them, nor the
-/// edges of a face its finest spacing: an underestimate (25,194 where 47,616 were taken on
-/// NIST FTC 06, 239,151 for 280,849 on the shelf), good for telling a few small thin walls from
-/// many large ones.
-double refined_sample_count(const Samples& first, const SpacingField& field);
-
 }  // namespace cadmedial
