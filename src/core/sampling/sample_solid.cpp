@@ -291,7 +291,8 @@ class Sampler {
       const bool sharp = is_sharp(e);
       const SampleSpacing local = sample_spacing(field_.on_edge(e));
       const double h = curve_spacing(curve, sharp ? local.edge : local.face);
-      plan.excl = f_.edge_kind[e] == EdgeKind::Convex || f_.edge_kind[e] == EdgeKind::Mixed ? 1.05 * local.triplet : 0.0;
+      const bool convex = f_.edge_kind[e] == EdgeKind::Convex || f_.edge_kind[e] == EdgeKind::Mixed;
+      plan.excl = convex ? 1.05 * local.triplet : 0.0;
       const double len = GCPnts_AbscissaPoint::Length(curve, t0, t1);
       // 4.2.1 ball rule: the ball around a sharp corner meets the edge in one sample, and no
       // other sample lies inside the ball.
