@@ -979,39 +979,31 @@ Samples sample_solid(const TopoDS_Solid& solid, const Features& features, const 
 
 SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) {
   SolidMeasure m;
-  // Per face, on two threads taking the next face in turn (a B-spline face's area integral costs
-  // hundreds of times a plane's: 0.18 s of NIST CTC 02's set-up on one core).
-  const int nf = features.faces.Extent();
-  m.faces.assign(nf, {0.0, 0.0, false});
-  std::atomic<int> next{0};
-  auto measure_faces = [&](const std::atomic<bool>& stop) {
-    for (int fi; !stop && (fi = next++) < nf;) {
-      const TopoDS_Face& face = TopoDS::Face(features.faces(fi + 1));
-      GProp_GProps props;
-      BRepGProp::SurfaceProperties(face, props);
-      // Mean over a probe grid of the largest principal curvature.
-      BRepAdaptor_Surface surf(face, Standard_False);
-      double kappa = 0;
-      if (surf.GetType() != GeomAbs_Plane) {
-        const std::array<double, 4> b = uv_bounds_of(features, fi);
-        const double u0 = b[0], u1 = b[1], v0 = b[2], v1 = b[3];
-        BRepLProp_SLProps sl(surf, 2, 1e-9);
-        int n = 0;
-        for (int i = 0; i < 6; ++i)
-          for (int j = 0; j < 6; ++j) {
-            sl.SetParameters(u0 + (u1 - u0) * (i + 0.5) / 6, v0 + (v1 - v0) * (j + 0.5) / 6);
-            if (!sl.IsCurvatureDefined()) continue;
-            kappa += std::max(std::abs(sl.MaxCurvature()), std::abs(sl.MinCurvature()));
-            ++n;
-          }
-        if (n > 0) kappa /= n;
-      }
-      m.faces[fi] = {props.Mass(), kappa, false};
+  for (int fi = 1; fi <= features.faces.Extent(); ++fi) {
+    const TopoDS_Face& face = TopoDS::Face(features.faces(fi));
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(face, props);
+    const double area = props.Mass();
+    m.area += area;
+    // Mean over a probe grid of the largest principal curvature.
+    BRepAdaptor_Surface surf(face, Standard_False);
+    double kappa = 0;
+    if (surf.GetType() != GeomAbs_Plane) {
+      const std::array<double, 4> b = uv_bounds_of(features, fi - 1);
+      const double u0 = b[0], u1 = b[1], v0 = b[2], v1 = b[3];
+      BRepLProp_SLProps sl(surf, 2, 1e-9);
+      int n = 0;
+      for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) {
+          sl.SetParameters(u0 + (u1 - u0) * (i + 0.5) / 6, v0 + (v1 - v0) * (j + 0.5) / 6);
+          if (!sl.IsCurvatureDefined()) continue;
+          kappa += std::max(std::abs(sl.MaxCurvature()), std::abs(sl.MinCurvature()));
+          ++n;
+        }
+      if (n > 0) kappa /= n;
     }
-  };
-  const std::atomic<bool> go{false};
-  internal::on_two_cores([&] { measure_faces(go); }, measure_faces);
-  for (const auto& f : m.faces) m.area += f.size;
+    m.faces.push_back({area, kappa, false});
+  }
   for (int e = 0; e < features.edges.Extent(); ++e) {
     const EdgeKind k = features.edge_kind[e];
     if (k != EdgeKind::Convex && k != EdgeKind::Concave && k != EdgeKind::Mixed) continue;
