@@ -268,6 +268,8 @@ class Sampler {
   // An edge's samples before they get ids: parameter, point and tag of each (ball, interior,
   // ball), and the exclusion radius they carry; or why OpenCASCADE could not place them.
   struct EdgePlan {
+    int ia = -1, ib = -1;  ///< the corners at its ends (vertex indices), -1 for none
+    double t0 = 0, t1 = 0;  ///< its parameter range
     std::vector<std::pair<double, SampleTag>> params;
     std::vector<Point3> points;
     double excl = 0.0;
@@ -279,13 +281,14 @@ class Sampler {
   EdgePlan plan_edge(int e) const {
     EdgePlan plan;
     const TopoDS_Edge& edge = TopoDS::Edge(f_.edges(e + 1));
-    if (BRep_Tool::Degenerated(edge)) return plan;
     TopoDS_Vertex va, vb;
     TopExp::Vertices(edge, va, vb);
-    const int ia = va.IsNull() ? -1 : f_.vertices.FindIndex(va) - 1;
-    const int ib = vb.IsNull() ? -1 : f_.vertices.FindIndex(vb) - 1;
-    double t0 = 0, t1 = 0;
-    BRep_Tool::Range(edge, t0, t1);
+    plan.ia = va.IsNull() ? -1 : f_.vertices.FindIndex(va) - 1;
+    plan.ib = vb.IsNull() ? -1 : f_.vertices.FindIndex(vb) - 1;
+    BRep_Tool::Range(edge, plan.t0, plan.t1);
+    const int ia = plan.ia, ib = plan.ib;
+    const double t0 = plan.t0, t1 = plan.t1;
+    if (BRep_Tool::Degenerated(edge)) return plan;
     try {
       BRepAdaptor_Curve curve(edge);
       const bool sharp = is_sharp(e);
@@ -339,16 +342,9 @@ class Sampler {
           for (int e; !stop && (e = next++) < ne;) plans[e] = plan_edge(e);
         });
     for (int e = 0; e < ne; ++e) {
-      const TopoDS_Edge& edge = TopoDS::Edge(f_.edges(e + 1));
-      TopoDS_Vertex va, vb;
-      TopExp::Vertices(edge, va, vb);
-      const int ia = va.IsNull() ? -1 : f_.vertices.FindIndex(va) - 1;
-      const int ib = vb.IsNull() ? -1 : f_.vertices.FindIndex(vb) - 1;
-      double t0 = 0, t1 = 0;
-      BRep_Tool::Range(edge, t0, t1);
-      auto& chain = chains_[e];
-      if (ia >= 0) chain.push_back({corner_sample_[ia], t0});
       const EdgePlan& plan = plans[e];
+      auto& chain = chains_[e];
+      if (plan.ia >= 0) chain.push_back({corner_sample_[plan.ia], plan.t0});
       if (!plan.error.empty()) throw GeometryError(plan.error);
       if (!plan.params.empty()) {
         // The edge's curves and faces, looked up once by the classification (edge_point per
@@ -375,7 +371,7 @@ class Sampler {
           throw GeometryError("edge " + std::to_string(e + 1) + ": cannot sample: " + err.GetMessageString());
         }
       }
-      if (ib >= 0) chain.push_back({corner_sample_[ib], t1});
+      if (plan.ib >= 0) chain.push_back({corner_sample_[plan.ib], plan.t1});
     }
   }
 
