@@ -224,9 +224,9 @@ void resample_for(SolidSampling& s, const Features& features, const SolidMeasure
     SpacingField finer = thin_wall_field(s.samples, features, spacing, radii, needed);
     if (finer.is_uniform()) return keep_uniform(s, finer.uniform());
     s.walls_pending = false;
-    // The estimate is within 15 % on the parts of ../shared/data/models (bench/README.md); the
-    // estimate that refined_sample_count gave before, half of the count on some parts, had NIST
-    // CTC 02 at 66k samples sample 210,185 points in 1.9 s and throw them away.
+    // The estimate is within 15 % of the count on the parts of ../shared/data/models where it is
+    // near the budget (bench/README.md). The one before (a quarter to nine tenths of the count)
+    // had NIST CTC 02 at 66k samples sample 210,185 points in 1.9 s and throw them away.
     if (estimate_samples(measure, features, finer, s.samples) <= kSampleBudget * first) {
       Samples more = sampler.sample(finer, progress);
       if (static_cast<double>(more.size()) <= kSampleBudget * first) {
