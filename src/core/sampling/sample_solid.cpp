@@ -794,7 +794,7 @@ class Sampler {
       props.SetParameters(u, v);
       if (props.IsCurvatureDefined()) {
         k = std::max(std::abs(props.MaxCurvature()), std::abs(props.MinCurvature()));
-        if (k > 0) r = std::clamp(sp_.max_turn_rad / k, std::min(sp_.min_face, h), h);
+        r = sp_.face_at(k, h);
       }
     }
     const Point3 c = to_point(p);
@@ -1026,6 +1026,9 @@ SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) 
 
 namespace {
 
+// Thinning keeps face samples at least r apart, which packs about one per kAreaPerSample r^2.
+constexpr double kAreaPerSample = 1.47;
+
 // The samples of a face's interior at spacing r (as curvature leaves it) with triplet legs
 // `triplet` (sample_solid's rule; estimate_samples).
 double face_samples(const SolidMeasure::Piece& f, double r, double triplet) {
@@ -1035,7 +1038,6 @@ double face_samples(const SolidMeasure::Piece& f, double r, double triplet) {
   // concave one: those strips are taken off each face at its own density. (Taken off at the
   // uniform density, as before, a small curved face between convex edges was estimated at 260
   // samples where it got 29, on the Y-rod mount at spacing 3.4.)
-  constexpr double kAreaPerSample = 1.47;
   const double strips = f.convex_edges * (1.05 * triplet + 0.5 * r) + f.concave_edges * 0.5 * r;
   return std::max(0.0, f.size - strips) / (kAreaPerSample * r * r);
 }
@@ -1063,8 +1065,9 @@ double estimate_samples(const SolidMeasure& m, double spacing) {
 double estimate_samples(const SolidMeasure& m, const Features& features, const SpacingField& field,
                         const Samples& first) {
   // The finest a face is sampled: its candidates come every half spacing, a lattice cell cut at
-  // most 8 x 8, and thinning at r keeps one per 1.47 r^2: at most 16^2 / 1.47 per spacing^2.
-  const double finest = 16.0 / std::sqrt(1.47);
+  // most 8 x 8, and thinning at r keeps one per kAreaPerSample r^2: at most 16^2 / 1.47 per
+  // spacing^2.
+  const double finest = 16.0 / std::sqrt(kAreaPerSample);
   const SampleSpacing sp = sample_spacing(field.uniform());
   const std::size_t nf = m.faces.size(), ne = features.edge_kind.size();
   double corners = 0, faces = 0;
@@ -1122,8 +1125,7 @@ double estimate_samples(const SolidMeasure& m, const Features& features, const S
     const double k = m.faces[f].curvature;
     const double around = near_count[f] > 0 ? near_sum[f] / near_count[f] : field.on_face(static_cast<int>(f));
     const double local = std::max(around, sp.face_at(k) / finest);
-    // Curvature refines down to the uniform spacing's floor (try_face_candidate).
-    const double r = k > 0 ? std::clamp(sp.max_turn_rad / k, std::min(sp.min_face, local), local) : local;
+    const double r = sp.face_at(k, local);  // as try_face_candidate
     faces += std::max(stand_for[f], face_samples(m.faces[f], r, 0.5 * local));
   }
   // The sampler spaces an edge evenly by the smallest spacing on it: a sharp edge by its length

@@ -32,6 +32,11 @@ struct SampleSpacing {
   double face_at(double curvature) const {
     return curvature > 0 ? std::clamp(max_turn_rad / curvature, min_face, face) : face;
   }
+  /// The same where the local spacing is h (finer than `face` at thin walls): finer where it
+  /// curves, down to min_face or h if that is finer.
+  double face_at(double curvature, double h) const {
+    return curvature > 0 ? std::clamp(max_turn_rad / curvature, std::min(min_face, h), h) : h;
+  }
 };
 SampleSpacing sample_spacing(double spacing);
 
