@@ -277,3 +277,31 @@ def test_walls_thinner_than_two_spacings_are_reported_as_a_warning(doc, capfd):
     out, err = capfd.readouterr()
     assert coarse.Status == "ok"
     assert "thinner than two sample spacings" not in out + err
+
+
+MODELS = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir, os.pardir,
+                                      "shared", "data", "models"))
+
+
+def test_engine_block_example_whose_spline_edge_defeats_arc_length_search_computes(doc):
+    # FreeCAD's own example document (../shared/data/models/freecad, CC-BY-SA, read in place).
+    # Its "Common" solid is bounded by a periodic B-spline on which OpenCASCADE's arc-length
+    # search (GCPnts_AbscissaPoint) throws "no result": the edge sampling refused the whole part.
+    path = os.path.join(MODELS, "freecad", "EngineBlock.FCStd")
+    if not os.path.isfile(path):
+        pytest.skip("../shared/data/models is not beside the repository")
+    head = FreeCAD.openDocument(path).getObject("Common")
+    feature = medial_app.make_medial_axis(head, samples=SAMPLES)
+    assert feature.Status == "ok"
+    result = medial_app.medial_result(feature)
+    # Facts of the medial axis at 60 of its vertices: inside the solid, and the radius is the
+    # distance to the boundary (never less; at most a spacing more, the sampling's gaps).
+    solid = head.Shape.Solids[0]
+    boundary = Part.Compound(solid.Faces)
+    h = feature.SpacingUsed.Value
+    picks = np.random.default_rng(7).choice(result.num_vertices, 60, replace=False)
+    for i in picks:
+        p = FreeCAD.Vector(*map(float, result.vertices[i]))
+        assert solid.isInside(p, 1e-6 * solid.BoundBox.DiagonalLength, True), i
+        d = boundary.distToShape(Part.Vertex(p))[0]
+        assert d <= result.radius[i] + 1e-6 and result.radius[i] <= d + h, (i, d, result.radius[i])

@@ -35,6 +35,7 @@
 
 #include "../errors.h"
 #include "../two_cores.h"
+#include "arc_length.h"
 #include "lattice_classifier.h"
 #include "point_grid.h"
 
@@ -296,23 +297,21 @@ class Sampler {
       const double h = curve_spacing(curve, sharp ? local.edge : local.face);
       const bool convex = f_.edge_kind[e] == EdgeKind::Convex || f_.edge_kind[e] == EdgeKind::Mixed;
       plan.excl = convex ? 1.05 * local.triplet : 0.0;
-      const double len = GCPnts_AbscissaPoint::Length(curve, t0, t1);
+      const ArcLength arc(curve, t0, t1);
+      const double len = arc.length(t0, t1);
       // 4.2.1 ball rule: the ball around a sharp corner meets the edge in one sample, and no
       // other sample lies inside the ball.
       const double ra = ia >= 0 ? ball_radius_[ia] : 0.0, rb = ib >= 0 ? ball_radius_[ib] : 0.0;
       double a = t0, b = t1;
       if (ra > 0 && ra < 0.5 * len) {
-        a = GCPnts_AbscissaPoint(curve, ra, t0).Parameter();
+        a = arc.parameter(ra, t0);
         plan.params.push_back({a, SampleTag::Ball});
       }
       const double rest_b = rb > 0 && rb < 0.5 * len ? rb : 0.0;
-      if (rest_b > 0) b = GCPnts_AbscissaPoint(curve, -rb, t1).Parameter();
-      const double inner = GCPnts_AbscissaPoint::Length(curve, a, b);
+      if (rest_b > 0) b = arc.parameter(-rb, t1);
+      const double inner = arc.length(a, b);
       const int n = std::max(1, static_cast<int>(std::ceil(inner / h)));
-      for (int i = 1; i < n; ++i) {
-        const double ti = GCPnts_AbscissaPoint(curve, inner * i / n, a).Parameter();
-        plan.params.push_back({ti, SampleTag::Edge});
-      }
+      for (int i = 1; i < n; ++i) plan.params.push_back({arc.parameter(inner * i / n, a), SampleTag::Edge});
       if (rest_b > 0) plan.params.push_back({b, SampleTag::Ball});
       for (const auto& [t, tag] : plan.params) plan.points.push_back(to_point(curve.Value(t)));
     } catch (const Standard_Failure& err) {
