@@ -243,6 +243,18 @@ void resample_for(SolidSampling& s, const Features& features, const SolidMeasure
   s.field = std::move(field);
 }
 
+// Runs a sampling step of solid i of n: a failure names the solid when there are several
+// ("solid 2: edge 1: cannot sample: ...").
+template <class Step>
+void naming_solid(std::size_t i, std::size_t n, Step&& step) {
+  try {
+    step();
+  } catch (const GeometryError& err) {
+    if (n < 2) throw;
+    throw GeometryError("solid " + std::to_string(i + 1) + ": " + err.what());
+  }
+}
+
 // With a target count, the plan's estimate ignores the extra samples that curved faces take:
 // sample, and rescale the spacing by the square root of the miss until within 15 % (3 passes).
 // Then where walls are thinner than the spacing allows, sample the solid again with a finer
@@ -261,7 +273,9 @@ std::vector<SolidSampling> sample_solids(std::vector<std::unique_ptr<SolidSample
     out.clear();
     double total = 0;
     for (size_t i = 0; i < samplers.size(); ++i) {
-      out.push_back({samplers[i]->sample(SpacingField(spacing), progress), SpacingField(spacing), {}});
+      naming_solid(i, samplers.size(), [&] {
+        out.push_back({samplers[i]->sample(SpacingField(spacing), progress), SpacingField(spacing), {}});
+      });
       total += static_cast<double>(out.back().samples.size());
     }
     const double miss = total / target;
@@ -273,8 +287,10 @@ std::vector<SolidSampling> sample_solids(std::vector<std::unique_ptr<SolidSample
     SolidSampling& s = out[i];
     s.walls_pending = true;
     if (defer_walls) continue;
-    const std::vector<double> radii = radii_of_thin_walls(s.samples, features[i], spacing, progress, 2);
-    resample_for(s, features[i], m.solids[i], spacing, radii, *samplers[i], progress);
+    naming_solid(i, samplers.size(), [&] {
+      const std::vector<double> radii = radii_of_thin_walls(s.samples, features[i], spacing, progress, 2);
+      resample_for(s, features[i], m.solids[i], spacing, radii, *samplers[i], progress);
+    });
   }
   return out;
 }
@@ -509,8 +525,10 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         }
         umbrellas.wait();
         try {
-          const std::vector<double> radii = radii_of_thin_walls(samples, features[i], spacing, sub, 2);
-          resample_for(sampling, features[i], m.solids[i], spacing, radii, *samplers[i], sub);
+          naming_solid(i, solids.size(), [&] {
+            const std::vector<double> radii = radii_of_thin_walls(samples, features[i], spacing, sub, 2);
+            resample_for(sampling, features[i], m.solids[i], spacing, radii, *samplers[i], sub);
+          });
         } catch (const Cancelled&) {
           throw;
         } catch (...) {
