@@ -17,8 +17,10 @@
 
 #include "../errors.h"
 #include "../features/classify_features.h"
+#include "../features/solid_euler.h"
 #include "../io/read_shape.h"
 #include "../medial/medial_axis.h"
+#include "../medial/open_flat_pockets.h"
 #include "../medial/reconstruct_faces.h"
 #include "../sampling/sample_solid.h"
 #include "../sampling/spacing_field.h"
@@ -537,6 +539,14 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         }
         // As when the check ran before the triangulation: it and the finer pass are sampling.
         add_timing(stats.timings, "sampling", seconds_since(t_try));
+      }
+      // A void the solid does not have (flat pockets where samples lie in symmetric rings) shows
+      // in the Euler characteristic; only then is the whole mesh's incidence worth building.
+      if (ms.euler_characteristic != solid_euler_characteristic(solid)) {
+        const auto t_pockets = Clock::now();
+        ss.opened_pockets = open_flat_pockets(mesh);
+        ms.euler_characteristic -= static_cast<long>(ss.opened_pockets);
+        add_timing(stats.timings, "inner", seconds_since(t_pockets));
       }
       ss.samples = samples.size();
       // Beside the kept triangulation, overlapping "delaunay" as "check" and "reconstruction" do.

@@ -30,6 +30,8 @@ struct SolidStats {
   std::size_t edges = 0;           ///< output edges: 1-D parts of the axis that no face carries
   std::size_t unattached_faces = 0;  ///< completion triangles left out because they would close a loop
   long euler_characteristic = 0;   ///< V - E + F of the output; the solid's when the topology is right
+  /// faces removed to open closed pockets of zero volume (open_flat_pockets), one per pocket
+  std::size_t opened_pockets = 0;
   /// Thickness of the thinnest wall the samples show (thinnest_wall), if under 2 spacings, else
   /// infinity.
   double thinnest_wall = 0.0;

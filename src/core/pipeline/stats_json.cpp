@@ -73,6 +73,7 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"dropped_faces\": " + std::to_string(s.dropped_faces);
     j += ", \"components\": " + std::to_string(s.components);
     j += ", \"filler_faces\": " + std::to_string(s.filler_faces);
+    j += ", \"opened_pockets\": " + std::to_string(s.opened_pockets);
     j += ", \"edges\": " + std::to_string(s.edges);
     j += ", \"unattached_faces\": " + std::to_string(s.unattached_faces);
     j += ", \"euler_characteristic\": " + std::to_string(s.euler_characteristic);

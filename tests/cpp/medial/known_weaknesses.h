@@ -15,14 +15,12 @@ inline bool known_weakness(const std::string& test, const std::string& name) {
       // approximate the axis where it is a curve (the paper, section 5: "thin Voronoi facets").
       {"NearAxis", "Cylinder"},
       // Hard inputs (test_hard_inputs.cpp; figures measured on the hard-inputs branch).
-      // Where a 3-degree wedge is thinner than about h (0.83 to 1.04 h) the axis stops: its edge is 3.97
-      // from the output at h = 0.25 (missing length ~ h / tan(angle): 0.72 at 20 degrees, 1.28 at
-      // 10, 2.4 at 5); the 4.2.2 completion does not bridge it. V - E + F = -4 with adaptive
-      // sampling (-28 before fill_sheet_holes; the wedge is refined to h / 4 where it is thin; it
-      // stays thinner than that near its edge).
+      // Where a 3-degree wedge is thinner than about h (0.83 to 1.04 h) the axis stops: its edge is
+      // 0.82 from the output at h = 0.25 (3.97 before adaptive sampling; missing length ~ h /
+      // tan(angle): 0.72 at 20 degrees, 1.28 at 10, 2.4 at 5); the 4.2.2 completion does not
+      // bridge it. (Its V - E + F, -4 once, is the solid's 1 since at least bb1fc3b.)
       {"ConvexEdges", "SharpWedge3deg"},
       {"Corners", "SharpWedge3deg"},
-      {"Euler", "SharpWedge3deg"},
       // A 175-degree convex edge: 14 of its points are 0.48 (2.4 h) from the output (178
       // degrees: 1.10, 179: 2.12).
       {"ConvexEdges", "FlatConvexEdge175deg"},

@@ -7,6 +7,7 @@
 #include <TopoDS_Shape.hxx>
 
 #include "core/features/classify_features.h"
+#include "core/features/solid_euler.h"
 #include "support/vec3.h"
 
 namespace cadmedial::test {
@@ -51,11 +52,8 @@ std::vector<Vec3> nonconcave_corner_points(const Features& features);
 
 namespace cadmedial::test {
 
-/// Euler characteristic of the solid (as a 3-manifold with boundary), from its B-rep alone:
-/// chi(solid) = chi(boundary) / 2, and chi(boundary) = V - E + sum over faces of (2 - #wires)
-/// (a face with k wires is a disc with k - 1 holes; a seam edge is an ordinary edge of the cell
-/// decomposition; degenerate edges, e.g. a sphere's poles, collapse to their vertex and are not
-/// counted). Box 1, ball 1, solid torus 0, a block with g through-holes 1 - g.
-long solid_euler_characteristic(const TopoDS_Shape& solid);
+/// The engine's count from the B-rep (features/solid_euler.h): box 1, ball 1, solid torus 0, a
+/// block with g through-holes 1 - g.
+using cadmedial::solid_euler_characteristic;
 
 }  // namespace cadmedial::test
