@@ -306,7 +306,7 @@ std::vector<std::unique_ptr<SolidSampler>> samplers_for(const std::vector<TopoDS
 
 // A convex edge sharper than the thin-wall sampling adapts to (kSharpWedgeDot): the sheet that
 // bisects it is undersampled near the edge, and nothing else in the result would say so. A
-// triangle prism with a 10-degree corner gives Euler 1 / 0 / -3 at 10k / 20k / 40k samples; one
+// triangle prism with a 10-degree corner gives Euler 1 / 0 / 0 at 10k / 20k / 40k samples; one
 // with a 15-degree corner is right at each (fill_sheet_holes), but by a repair, not the sampling.
 void warn_of_sharp_wedge(const Samples& samples, int solid, int solids, std::vector<std::string>& warnings) {
   const SharpestWedge w = sharpest_wedge(samples);
@@ -546,7 +546,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         const auto t_pockets = Clock::now();
         ss.opened_pockets = open_flat_pockets(mesh);
         ms.euler_characteristic -= static_cast<long>(ss.opened_pockets);
-        add_timing(stats.timings, "inner", seconds_since(t_pockets));
+        add_timing(stats.timings, "pockets", seconds_since(t_pockets));
       }
       ss.samples = samples.size();
       // Beside the kept triangulation, overlapping "delaunay" as "check" and "reconstruction" do.
