@@ -542,7 +542,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       }
       // A void the solid does not have (flat pockets where samples lie in symmetric rings) shows
       // in the Euler characteristic; only then is the whole mesh's incidence worth building.
-      if (ms.euler_characteristic != solid_euler_characteristic(solid)) {
+      if (!params.medial.plain_medial && ms.euler_characteristic != solid_euler_characteristic(solid)) {
         const auto t_pockets = Clock::now();
         ss.opened_pockets = open_flat_pockets(mesh);
         ms.euler_characteristic -= static_cast<long>(ss.opened_pockets);
