@@ -105,15 +105,10 @@ std::vector<int> closing_faces(const Sides& s, const std::vector<int>& group) {
   for (int f : group) {
     std::vector<int> row(s.face_edge.begin() + s.face_start[f], s.face_edge.begin() + s.face_start[f + 1]);
     std::sort(row.begin(), row.end());
-    // A side twice in one polygon cancels (mod 2).
-    std::vector<int> reduced;
-    for (std::size_t k = 0; k < row.size(); ++k) {
-      if (k + 1 < row.size() && row[k] == row[k + 1]) {
-        ++k;
-        continue;
-      }
-      reduced.push_back(row[k]);
-    }
+    // A polygon with a side twice or under 3 sides (the pipeline makes none) is left out: its
+    // removal could take an edge with it.
+    if (row.size() < 3 || std::adjacent_find(row.begin(), row.end()) != row.end()) continue;
+    std::vector<int> reduced = row;
     while (!reduced.empty()) {
       const auto it = pivot.find(reduced.back());
       if (it == pivot.end()) break;
@@ -186,7 +181,7 @@ std::size_t open_flat_pockets(MedialMesh& mesh) {
     for (int f : group) vertices.insert(vertices.end(), mesh.face(f), mesh.face(f) + mesh.face_size(f));
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    if (!flat(mesh, vertices)) continue;
+    if (vertices.empty() || !flat(mesh, vertices)) continue;
     for (int f : closing_faces(s, group)) remove[f] = 1, ++removed;
   }
   if (removed == 0) return 0;

@@ -22,6 +22,7 @@ constexpr std::array<double, 4> kWeight = {0.3626837833783620, 0.313706645877887
 constexpr int kSeeds = 16;     // pieces over [t0, t1] before any split, besides the curve's own spans
 constexpr int kMaxDepth = 24;  // halvings of a seed (a cusp, where the speed vanishes, converges slowly)
 constexpr double kRelative = 1e-10;
+constexpr std::size_t kMaxPieces = 100000;  // past this (a speed that never settles), pieces are taken as they are
 
 }  // namespace
 
@@ -32,8 +33,8 @@ ArcLength::ArcLength(const Adaptor3d_Curve& curve, double t0, double t1)
     before_ = {0.0, closed_form_ ? GCPnts_AbscissaPoint::Length(curve, t0, end_[1]) : 0.0};
     return;
   }
-  // Seeds: the curve's polynomial spans (a B-spline's knots break C3 for cubics and below), each
-  // cut into its share of kSeeds.
+  // Seeds: where OpenCASCADE breaks C3 (a cubic B-spline's knots; none on a periodic B-spline
+  // trimmed off its base period: the halving below copes), each span cut into its share of kSeeds.
   std::vector<double> cuts = {t0};
   const int spans = curve.NbIntervals(GeomAbs_C3);
   TColStd_Array1OfReal bounds(1, spans + 1);
@@ -41,6 +42,8 @@ ArcLength::ArcLength(const Adaptor3d_Curve& curve, double t0, double t1)
   std::vector<double> breaks;
   for (int k = bounds.Lower(); k <= bounds.Upper(); ++k)
     if (bounds(k) > t0 && bounds(k) < t1) breaks.push_back(bounds(k));
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
   breaks.push_back(t1);
   for (double b : breaks) {
     const double a = cuts.back();
@@ -74,7 +77,7 @@ double ArcLength::gauss(double a, double b) const {
 
 void ArcLength::add_pieces(double a, double b, double whole, int depth) {
   const double m = 0.5 * (a + b), left = gauss(a, m), right = gauss(m, b);
-  if (depth < kMaxDepth && std::abs(left + right - whole) > tolerance_) {
+  if (depth < kMaxDepth && end_.size() < kMaxPieces && std::abs(left + right - whole) > tolerance_) {
     add_pieces(a, m, left, depth + 1);
     add_pieces(m, b, right, depth + 1);
     return;
@@ -121,7 +124,7 @@ double ArcLength::length(double a, double b) const {
 }
 
 double ArcLength::parameter(double ds, double from) const {
-  if (closed_form_) return GCPnts_AbscissaPoint(curve_, ds, from).Parameter();
+  if (closed_form_) return std::clamp(GCPnts_AbscissaPoint(curve_, ds, from).Parameter(), end_.front(), end_.back());
   return parameter_at(length_to(from) + ds);
 }
 

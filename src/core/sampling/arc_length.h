@@ -17,6 +17,7 @@ namespace cadmedial {
 class ArcLength {
  public:
   ArcLength(const Adaptor3d_Curve& curve, double t0, double t1);
+  ArcLength(const Adaptor3d_Curve&& curve, double t0, double t1) = delete;  // it keeps a reference
 
   /// The arc length from parameter a to b, t0 <= a <= b <= t1.
   double length(double a, double b) const;
