@@ -39,4 +39,25 @@ void on_two_halves(std::size_t n, const Fn& fn, std::size_t min_split = 0) {
   on_two_cores([&] { fn(0, std::size_t{0}, mid); }, [&](const std::atomic<bool>&) { fn(1, mid, n); });
 }
 
+/// fn(k) for every k in [0, n), two threads each taking the next k in turn: for items of uneven
+/// cost (a B-spline face against a plane), where halves would leave one thread waiting. Which
+/// thread takes which k varies from run to run: fn should write to k's own slot. After a throw
+/// on either thread the other takes no new k, and the exception goes on.
+template <class Fn>
+void on_two_cores_each(std::size_t n, const Fn& fn) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  auto work = [&](const std::atomic<bool>& stop) {
+    try {
+      for (std::size_t k; !stop && !failed && (k = next++) < n;) fn(k);
+    } catch (...) {
+      failed = true;
+      throw;
+    }
+  };
+  const std::atomic<bool> never{false};
+  if (n < 2) return work(never);
+  on_two_cores([&] { work(never); }, work);
+}
+
 }  // namespace cadmedial::internal

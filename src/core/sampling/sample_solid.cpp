@@ -974,12 +974,16 @@ Samples sample_solid(const TopoDS_Solid& solid, const Features& features, const 
 
 SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) {
   SolidMeasure m;
-  for (int fi = 1; fi <= features.faces.Extent(); ++fi) {
+  // Each face's and each sharp edge's own numbers first, the two cores taking the next in turn (the
+  // faces' Gauss integrals were half the set-up on B-spline-rich parts: NIST CTC 02, 0.12 s on
+  // one core); then summed in order, as one pass did.
+  const int nf = features.faces.Extent(), ne = features.edges.Extent();
+  m.faces.assign(nf, {0.0, 0.0, false});
+  internal::on_two_cores_each(static_cast<std::size_t>(nf), [&](std::size_t k) {
+    const int fi = static_cast<int>(k) + 1;
     const TopoDS_Face& face = TopoDS::Face(features.faces(fi));
     GProp_GProps props;
     BRepGProp::SurfaceProperties(face, props);
-    const double area = props.Mass();
-    m.area += area;
     // Mean over a probe grid of the largest principal curvature.
     BRepAdaptor_Surface surf(face, Standard_False);
     double kappa = 0;
@@ -997,13 +1001,14 @@ SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) 
         }
       if (n > 0) kappa /= n;
     }
-    m.faces.push_back({area, kappa, false});
-  }
-  for (int e = 0; e < features.edges.Extent(); ++e) {
+    m.faces[k] = {props.Mass(), kappa, false};
+  });
+  for (const SolidMeasure::Piece& f : m.faces) m.area += f.size;
+  std::vector<SolidMeasure::Piece> edges(ne, {0.0, 0.0, false});
+  internal::on_two_cores_each(static_cast<std::size_t>(ne), [&](std::size_t e) {
     const EdgeKind k = features.edge_kind[e];
-    if (k != EdgeKind::Convex && k != EdgeKind::Concave && k != EdgeKind::Mixed) continue;
-    const BRepAdaptor_Curve curve(TopoDS::Edge(features.edges(e + 1)));
-    const double len = GCPnts_AbscissaPoint::Length(curve);
+    if (k != EdgeKind::Convex && k != EdgeKind::Concave && k != EdgeKind::Mixed) return;
+    const BRepAdaptor_Curve curve(TopoDS::Edge(features.edges(static_cast<int>(e) + 1)));
     double kappa = 0;
     for (int i = 0; i <= 8; ++i) {
       gp_Pnt p;
@@ -1012,10 +1017,16 @@ SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) 
       const double n1 = d1.Magnitude();
       if (n1 > 1e-300) kappa = std::max(kappa, d1.Crossed(d2).Magnitude() / (n1 * n1 * n1));
     }
+    edges[e] = {GCPnts_AbscissaPoint::Length(curve), kappa, k != EdgeKind::Concave};
+    edges[e].edge = static_cast<int>(e);
+  });
+  for (int e = 0; e < ne; ++e) {
+    if (edges[e].edge < 0) continue;
+    const double len = edges[e].size;
+    const EdgeKind k = features.edge_kind[e];
     m.sharp_edge_length += len;
     if (k != EdgeKind::Concave) m.convex_edge_length += len;
-    m.sharp_edges.push_back({len, kappa, k != EdgeKind::Concave});
-    m.sharp_edges.back().edge = e;
+    m.sharp_edges.push_back(edges[e]);
     for (int f : features.edge_faces[e])
       if (f >= 0 && f < static_cast<int>(m.faces.size()))
         (k == EdgeKind::Concave ? m.faces[f].concave_edges : m.faces[f].convex_edges) += len;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "../two_cores.h"
+
 namespace cadmedial {
 
 SpacingField::SpacingField(double spacing, const std::vector<Point3>& points, const std::vector<double>& local,
@@ -45,16 +47,25 @@ void SpacingField::measure_on(const Samples& s, const std::vector<std::array<int
   face_.assign(s.faces.size(), spacing_);
   edge_.assign(edge_faces.size(), spacing_);
   if (points_.empty()) return;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const double h = at(s.points[i]);
-    if (!(h < spacing_)) continue;
-    if (s.face[i] >= 0 && s.face[i] < static_cast<int>(face_.size())) face_[s.face[i]] = std::min(face_[s.face[i]], h);
-    const int e = s.edge[i];
-    if (e < 0 || e >= static_cast<int>(edge_.size())) continue;
-    edge_[e] = std::min(edge_[e], h);
-    for (int f : edge_faces[e])
-      if (f >= 0 && f < static_cast<int>(face_.size())) face_[f] = std::min(face_[f], h);
-  }
+  // Half the samples on each of two cores, each with its own minima (the queries were a third of
+  // the refinement's field time on NIST CTC 02 at 66k samples); the smaller of the two counts.
+  std::vector<double> face2 = face_, edge2 = edge_;
+  internal::on_two_halves(s.size(), [&](int part, std::size_t begin, std::size_t end) {
+    std::vector<double>& face = part ? face2 : face_;
+    std::vector<double>& edge = part ? edge2 : edge_;
+    for (std::size_t i = begin; i < end; ++i) {
+      const double h = at(s.points[i]);
+      if (!(h < spacing_)) continue;
+      if (s.face[i] >= 0 && s.face[i] < static_cast<int>(face.size())) face[s.face[i]] = std::min(face[s.face[i]], h);
+      const int e = s.edge[i];
+      if (e < 0 || e >= static_cast<int>(edge.size())) continue;
+      edge[e] = std::min(edge[e], h);
+      for (int f : edge_faces[e])
+        if (f >= 0 && f < static_cast<int>(face.size())) face[f] = std::min(face[f], h);
+    }
+  });
+  for (std::size_t f = 0; f < face_.size(); ++f) face_[f] = std::min(face_[f], face2[f]);
+  for (std::size_t e = 0; e < edge_.size(); ++e) edge_[e] = std::min(edge_[e], edge2[e]);
 }
 
 SpacingField thin_wall_spacing(const Samples& first, const std::vector<double>& radii, double spacing,

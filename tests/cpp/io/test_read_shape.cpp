@@ -251,6 +251,22 @@ TEST(ExtractSolids, InsideOutSolidIsReversed) {
   EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
 }
 
+TEST(ExtractSolids, InsideOutCurvedSolidsAreReversed) {
+  // The volume that decides the orientation is summed face by face on two threads: curved faces,
+  // seams and poles, with the vertices' mean off the origin.
+  const TopoDS_Shape shapes[] = {BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(5, -3, 2), gp_Dir(0, 1, 1)), 1.5, 4.0).Shape(),
+                                 BRepPrimAPI_MakeSphere(gp_Pnt(-7, 2, 9), 2.0).Shape()};
+  for (const TopoDS_Shape& shape : shapes) {
+    const double v = volume(shape);
+    ASSERT_GT(v, 0.0);
+    for (const TopoDS_Shape& given : {shape, shape.Reversed()}) {
+      const auto solids = extract_solids(given);
+      ASSERT_EQ(solids.size(), 1u);
+      EXPECT_NEAR(volume(solids[0]), v, 1e-9 * v);
+    }
+  }
+}
+
 TEST(ExtractSolids, SolidWithInwardFacesIsReversed) {
   // MakeSolid keeps the shell as given: reversed, its faces point inward and the volume is negative.
   const TopoDS_Solid inward = BRepBuilderAPI_MakeSolid(TopoDS::Shell(box_shell().Reversed())).Solid();
