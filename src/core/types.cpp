@@ -2,6 +2,8 @@
 #include "types.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numeric>
 #include <tuple>
 
@@ -64,6 +66,47 @@ void sort_on_two_cores(std::vector<T>& v, const Less& less) {
   v.swap(out);
 }
 
+// Sorts v by `less` when each key's bucket (bucket(key) < nb) is monotone in that order: a
+// counting pass into the buckets, then each bucket on its own, the buckets split between two
+// cores by their keys. Returns false, leaving v as it was, when a bucket holds more than a quarter
+// of the keys (one core would sort most of them; sort_on_two_cores is faster there). The
+// canonical order's two sorts took 0.05 s of 0.094 at 250k samples as halves and a merge.
+template <class T, class Bucket, class Less>
+bool sort_by_buckets(std::vector<T>& v, std::size_t nb, const Bucket& bucket, const Less& less) {
+  const std::size_t n = v.size();
+  std::vector<int> which(n);
+  std::vector<std::size_t> start(nb + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    which[i] = static_cast<int>(bucket(v[i]));
+    ++start[static_cast<std::size_t>(which[i]) + 1];
+  }
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (start[b + 1] > n / 4) return false;
+    start[b + 1] += start[b];
+  }
+  std::vector<T> out(n);
+  {
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) out[next[static_cast<std::size_t>(which[i])]++] = v[i];
+  }
+  // The buckets before the one that starts past the middle on this core, the rest on a second.
+  const auto split = static_cast<std::size_t>(std::upper_bound(start.begin(), start.end() - 1, n / 2) - start.begin());
+  const auto sort_buckets = [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; ++b)
+      if (start[b + 1] - start[b] > 1)
+        std::sort(out.begin() + static_cast<std::ptrdiff_t>(start[b]),
+                  out.begin() + static_cast<std::ptrdiff_t>(start[b + 1]), less);
+  };
+  if (n < kMinSplit) {
+    sort_buckets(0, nb);
+  } else {
+    internal::on_two_cores([&] { sort_buckets(0, split); },
+                           [&](const std::atomic<bool>&) { sort_buckets(split, nb); });
+  }
+  v.swap(out);
+  return true;
+}
+
 }  // namespace
 
 void MedialMesh::sort_canonically() {
@@ -76,8 +119,20 @@ void MedialMesh::sort_canonically() {
   };
   auto vertex_less = [](const VertexKey& a, const VertexKey& b) { return a.p < b.p || (a.p == b.p && a.r < b.r); };
   std::vector<VertexKey> keys(nv);
-  for (std::size_t i = 0; i < nv; ++i) keys[i] = {vertices[i], radius[i], static_cast<int>(i)};
-  sort_on_two_cores(keys, vertex_less);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < nv; ++i) {
+    keys[i] = {vertices[i], radius[i], static_cast<int>(i)};
+    lo = std::min(lo, vertices[i][0]);
+    hi = std::max(hi, vertices[i][0]);
+  }
+  // By x into about nv / 8 buckets (x - lo times a positive scale rounds monotonically).
+  const std::size_t nb = std::max<std::size_t>(1, nv / 8);
+  const double scale = hi > lo ? static_cast<double>(nb) / (hi - lo) : 0.0;
+  const auto x_bucket = [&](const VertexKey& k) {
+    return std::min(nb - 1, static_cast<std::size_t>((k.p[0] - lo) * scale));
+  };
+  if (!(std::isfinite(scale) && scale > 0 && std::isfinite(lo)) || !sort_by_buckets(keys, nb, x_bucket, vertex_less))
+    sort_on_two_cores(keys, vertex_less);
   std::vector<int> order(nv);
   bool ties = false;
   for (std::size_t i = 0; i < nv; ++i) {
@@ -136,7 +191,12 @@ void MedialMesh::sort_canonically() {
     if (std::lexicographical_compare(pb, pb + face_size(b), pa, pa + face_size(a))) return false;
     return kind[a] < kind[b];
   };
-  sort_on_two_cores(fkeys, face_less);
+  // By first corner (each polygon's smallest vertex) when all faces are one solid's; by the
+  // comparisons alone otherwise.
+  bool one_solid = true;
+  for (std::size_t f = 1; f < nf && one_solid; ++f) one_solid = solid[f] == solid[0];
+  const auto first_corner = [](const FaceKey& k) { return static_cast<std::size_t>(k.head[0] + 1); };
+  if (!one_solid || !sort_by_buckets(fkeys, nv + 1, first_corner, face_less)) sort_on_two_cores(fkeys, face_less);
   std::vector<int> sorted_start(nf + 1, 0);
   for (std::size_t i = 0; i < nf; ++i) sorted_start[i + 1] = sorted_start[i] + face_size(fkeys[i].index);
   std::vector<int> sorted_vertices(face_vertices.size());
