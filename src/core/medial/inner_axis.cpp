@@ -845,35 +845,44 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
     if (piece_items[r] > 0 && piece_completion[r] >= 8 && piece_items[r] >= best_size / 100) keep[r] = 1;
 
   report(progress, "inner", 0.95);
+  // The kept items' corners numbered in the order they come, then the mesh's arrays filled at
+  // their final sizes, the vertices on two cores (grown by doubling, the inner stage took 0.025 s
+  // longer at 250k samples: 738k vertices, 538k faces).
   MedialMesh mesh;
   AxisCells out;
   NodeMap<int> out_index(mc.num_cells(), samples.size(), -1);
-  auto vertex = [&](int node) {
-    int& index = out_index[node];
-    if (index < 0) {
-      index = static_cast<int>(mesh.vertices.size());
-      if (node >= 0) {
-        mesh.vertices.push_back(mc.centers[node]);
-        mesh.radius.push_back(mc.radii[node]);
-      } else {
-        mesh.vertices.push_back(samples.points[-node - 1]);
-        mesh.radius.push_back(0.0);  // a sample on the boundary: its medial ball has radius 0
-      }
-    }
-    return index;
-  };
-  std::vector<int> poly;
+  std::vector<int> node_of;
+  std::size_t kept_faces = 0, kept_corners = 0, kept_edges = 0;
   for (size_t i = 0; i < items; ++i) {
     if (!keep[root[i]]) continue;
     const auto [begin, end] = corners_of(i);
-    poly.clear();
-    for (const int* node = begin; node != end; ++node) poly.push_back(vertex(*node));
+    (i < nf ? kept_faces : kept_edges) += 1;
+    if (i < nf) kept_corners += static_cast<std::size_t>(end - begin);
+    for (const int* node = begin; node != end; ++node) {
+      int& index = out_index[*node];
+      if (index < 0) index = static_cast<int>(node_of.size()), node_of.push_back(*node);
+    }
+  }
+  mesh.face_vertices.reserve(kept_corners);
+  mesh.face_start.reserve(kept_faces + 1);
+  mesh.kind.reserve(kept_faces);
+  mesh.solid.reserve(kept_faces);
+  out.faces.reserve(kept_faces);
+  mesh.edges.reserve(kept_edges);
+  mesh.edge_solid.reserve(kept_edges);
+  out.edges.reserve(kept_edges);
+  for (size_t i = 0; i < items; ++i) {
+    if (!keep[root[i]]) continue;
+    const auto [begin, end] = corners_of(i);
     if (i < nf) {
       out.faces.push_back(cells.faces[i]);
-      mesh.add_face(poly, mc.kind[cells.faces[i]], solid_index);
+      for (const int* node = begin; node != end; ++node) mesh.face_vertices.push_back(out_index[*node]);
+      mesh.face_start.push_back(static_cast<int>(mesh.face_vertices.size()));
+      mesh.kind.push_back(mc.kind[cells.faces[i]]);
+      mesh.solid.push_back(solid_index);
     } else {
       out.edges.push_back(cells.edges[i - nf]);
-      mesh.edges.push_back({poly[0], poly[1]});
+      mesh.edges.push_back({out_index[begin[0]], out_index[begin[1]]});
       mesh.edge_solid.push_back(solid_index);
     }
   }
@@ -881,9 +890,21 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
   if (mesh.num_faces() == 0 && mesh.num_edges() == 0) {
     for (int node : mc.points) {
       if (!inside[node] || out_index[node] >= 0) continue;
-      vertex(node);
+      out_index[node] = static_cast<int>(node_of.size());
+      node_of.push_back(node);
     }
   }
+  // The vertices: Voronoi vertices with their radius, samples on the boundary with 0 (their
+  // medial ball).
+  mesh.vertices.resize(node_of.size());
+  mesh.radius.resize(node_of.size());
+  on_two_halves(node_of.size(), [&](int, std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const int node = node_of[k];
+      mesh.vertices[k] = node >= 0 ? mc.centers[node] : samples.points[-node - 1];
+      mesh.radius[k] = node >= 0 ? mc.radii[node] : 0.0;
+    }
+  }, 1 << 14);
   st.dropped_faces = 0;
   for (size_t f = 0; f < mc.size(); ++f) st.dropped_faces += !mc.filler[f];
   st.filler_faces = 0;
