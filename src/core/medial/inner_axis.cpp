@@ -850,7 +850,8 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
   // longer at 250k samples: 738k vertices, 538k faces).
   MedialMesh mesh;
   AxisCells out;
-  NodeMap<int> out_index(mc.num_cells(), samples.size(), -1);
+  NodeMap<int> out_index = std::move(node_owner);  // the pieces are found: its arrays again
+  out_index.fill(-1);
   std::vector<int> node_of;
   std::size_t kept_faces = 0, kept_corners = 0, kept_edges = 0;
   for (size_t i = 0; i < items; ++i) {
