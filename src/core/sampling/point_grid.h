@@ -40,18 +40,23 @@ class PointGrid {
     s->tail = entry;
   }
 
-  /// Calls visit(id) for every inserted point in the cells within `radius` of p (radius <= cell),
-  /// p's own cell first, then the others in x, y, z order; a cell's ids in insertion order.
-  /// Stops and returns true as soon as visit returns true.
+  /// Calls visit(id) for every inserted point in the cells that meet the cube of half-side
+  /// `radius` around p (so every point within `radius` of p, and others), p's own cell first, then
+  /// the others in x, y, z order; a cell's ids in insertion order. Stops and returns true as soon
+  /// as visit returns true. With radius at most a cell, that is 8 cells at most: the whole 3 x 3 x 3
+  /// block around p's cell, as before, made most of sampling's hash lookups.
   template <class Visit>
   bool any_near(const Point3& p, double radius, const Visit& visit) const {
     const int64_t cx = cell_of(p[0]), cy = cell_of(p[1]), cz = cell_of(p[2]);
-    const int reach = radius <= cell_ ? 1 : static_cast<int>(std::ceil(radius / cell_));
+    // A margin far above the rounding of p -/+ radius: a point within radius is never left out.
+    const double reach = radius + 1e-12 * (radius + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]));
+    const int64_t x0 = cell_of(p[0] - reach), y0 = cell_of(p[1] - reach), z0 = cell_of(p[2] - reach);
+    const int64_t x1 = cell_of(p[0] + reach), y1 = cell_of(p[1] + reach), z1 = cell_of(p[2] + reach);
     // The point's own cell first: while sampling, most candidates are turned down there.
     if (visit_cell(key(cx, cy, cz), visit)) return true;
-    for (int64_t x = cx - reach; x <= cx + reach; ++x)
-      for (int64_t y = cy - reach; y <= cy + reach; ++y)
-        for (int64_t z = cz - reach; z <= cz + reach; ++z) {
+    for (int64_t x = x0; x <= x1; ++x)
+      for (int64_t y = y0; y <= y1; ++y)
+        for (int64_t z = z0; z <= z1; ++z) {
           if (x == cx && y == cy && z == cz) continue;
           if (visit_cell(key(x, y, z), visit)) return true;
         }

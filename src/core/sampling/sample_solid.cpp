@@ -179,6 +179,7 @@ class Sampler {
     out_.vertex.push_back(-1);
     out_.nonconcave.push_back(0);
     exclusion_.push_back(exclusion);
+    max_exclusion_ = std::max(max_exclusion_, exclusion);
     grid_.insert(p, id);
     return id;
   }
@@ -809,7 +810,9 @@ class Sampler {
     // no neighbour: each wall needs its own samples for the sheet between them.
     if (own.any_near(c, r, [&](int id) { return distance2(in.point[id], c) < r * r && !opposite(in.normal[id], nc); }))
       return;
-    const bool crowded = grid_.any_near(c, std::max(r, sp_.edge), [&](int id) {
+    // Every sample whose exclusion can reach c (a convex edge's is 1.05 triplet legs, more than
+    // the edge spacing).
+    const bool crowded = grid_.any_near(c, std::max({r, sp_.edge, max_exclusion_}), [&](int id) {
       const double ex = std::max(r, exclusion_[id]);
       return distance2(out_.points[id], c) < ex * ex && !opposite(out_.normal[id], nc);
     });
@@ -929,6 +932,7 @@ class Sampler {
   Samples out_;
   PointGrid grid_;
   std::vector<double> exclusion_;
+  double max_exclusion_ = 0.0;  ///< the largest of exclusion_
   std::vector<int> corner_sample_;
   std::vector<double> ball_radius_;
   std::vector<double> edge_length_;
