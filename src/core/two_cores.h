@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <exception>
 #include <future>
 
 namespace cadmedial::internal {
@@ -42,22 +43,32 @@ void on_two_halves(std::size_t n, const Fn& fn, std::size_t min_split = 0) {
 /// fn(k) for every k in [0, n), two threads each taking the next k in turn: for items of uneven
 /// cost (a B-spline face against a plane), where halves would leave one thread waiting. Which
 /// thread takes which k varies from run to run: fn should write to k's own slot. After a throw
-/// on either thread the other takes no new k, and the exception goes on.
+/// on either thread neither takes a new k; when both are done, the exception of the lowest k that
+/// threw goes on (the one a loop over k would have thrown, whichever thread ran first).
 template <class Fn>
 void on_two_cores_each(std::size_t n, const Fn& fn) {
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
-  auto work = [&](const std::atomic<bool>& stop) {
-    try {
-      for (std::size_t k; !stop && !failed && (k = next++) < n;) fn(k);
-    } catch (...) {
-      failed = true;
-      throw;
+  std::size_t failed_at[2] = {n, n};
+  std::exception_ptr error[2];
+  auto work = [&](int part) {
+    for (std::size_t k; !failed && (k = next++) < n;) {
+      try {
+        fn(k);
+      } catch (...) {
+        failed_at[part] = k;
+        error[part] = std::current_exception();
+        failed = true;
+        return;
+      }
     }
   };
-  const std::atomic<bool> never{false};
-  if (n < 2) return work(never);
-  on_two_cores([&] { work(never); }, work);
+  if (n < 2)
+    work(0);
+  else
+    on_two_cores([&] { work(0); }, [&](const std::atomic<bool>&) { work(1); });
+  const int first = failed_at[1] < failed_at[0] ? 1 : 0;
+  if (error[first]) std::rethrow_exception(error[first]);
 }
 
 }  // namespace cadmedial::internal

@@ -131,7 +131,11 @@ void MedialMesh::sort_canonically() {
   const auto x_bucket = [&](const VertexKey& k) {
     return std::min(nb - 1, static_cast<std::size_t>((k.p[0] - lo) * scale));
   };
-  if (!(std::isfinite(scale) && scale > 0 && std::isfinite(lo)) || !sort_by_buckets(keys, nb, x_bucket, vertex_less))
+  // Min and max skip a NaN, which has no bucket: the comparisons alone then.
+  bool numbers = true;
+  for (const Point3& v : vertices) numbers = numbers && v[0] == v[0];
+  if (!(numbers && std::isfinite(scale) && scale > 0 && std::isfinite(lo)) ||
+      !sort_by_buckets(keys, nb, x_bucket, vertex_less))
     sort_on_two_cores(keys, vertex_less);
   std::vector<int> order(nv);
   bool ties = false;

@@ -70,12 +70,12 @@ class NodeMap {
  public:
   NodeMap(std::size_t cells, std::size_t samples, T init) : cells_(cells, init), samples_(samples, init) {}
   T& operator[](int node) { return node >= 0 ? cells_[node] : samples_[-node - 1]; }
+  const T& operator[](int node) const { return node >= 0 ? cells_[node] : samples_[-node - 1]; }
   /// Every node's value set to v (reusing the arrays: their pages are already in).
   void fill(T v) {
     std::fill(cells_.begin(), cells_.end(), v);
     std::fill(samples_.begin(), samples_.end(), v);
   }
-  const T& operator[](int node) const { return node >= 0 ? cells_[node] : samples_[-node - 1]; }
 
  private:
   std::vector<T> cells_, samples_;

@@ -1,6 +1,7 @@
 // A uniform hash grid over 3D points, for "is any sample within r?" while sampling.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -43,15 +44,19 @@ class PointGrid {
   /// Calls visit(id) for every inserted point in the cells that meet the cube of half-side
   /// `radius` around p (so every point within `radius` of p, and others), p's own cell first, then
   /// the others in x, y, z order; a cell's ids in insertion order. Stops and returns true as soon
-  /// as visit returns true. With radius at most a cell, that is 8 cells at most: the whole 3 x 3 x 3
-  /// block around p's cell, as before, made most of sampling's hash lookups.
+  /// as visit returns true. These cells are among the block of reach ceil(radius / cell) (at least
+  /// 1) around p's cell, the block visited before: with radius at most half a cell, 8 cells of its
+  /// 27 (most of sampling's hash lookups were in that block).
   template <class Visit>
   bool any_near(const Point3& p, double radius, const Visit& visit) const {
     const int64_t cx = cell_of(p[0]), cy = cell_of(p[1]), cz = cell_of(p[2]);
+    const int64_t block = radius <= cell_ ? 1 : static_cast<int64_t>(std::ceil(radius / cell_));
     // A margin far above the rounding of p -/+ radius: a point within radius is never left out.
     const double reach = radius + 1e-12 * (radius + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]));
-    const int64_t x0 = cell_of(p[0] - reach), y0 = cell_of(p[1] - reach), z0 = cell_of(p[2] - reach);
-    const int64_t x1 = cell_of(p[0] + reach), y1 = cell_of(p[1] + reach), z1 = cell_of(p[2] + reach);
+    const auto first = [&](double v, int64_t c) { return std::max(cell_of(v - reach), c - block); };
+    const auto last = [&](double v, int64_t c) { return std::min(cell_of(v + reach), c + block); };
+    const int64_t x0 = first(p[0], cx), y0 = first(p[1], cy), z0 = first(p[2], cz);
+    const int64_t x1 = last(p[0], cx), y1 = last(p[1], cy), z1 = last(p[2], cz);
     // The point's own cell first: while sampling, most candidates are turned down there.
     if (visit_cell(key(cx, cy, cz), visit)) return true;
     for (int64_t x = x0; x <= x1; ++x)

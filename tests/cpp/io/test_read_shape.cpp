@@ -252,8 +252,9 @@ TEST(ExtractSolids, InsideOutSolidIsReversed) {
 }
 
 TEST(ExtractSolids, InsideOutCurvedSolidsAreReversed) {
-  // The volume that decides the orientation is summed face by face on two threads: curved faces,
-  // seams and poles, with the vertices' mean off the origin.
+  // The volume that decides the orientation is summed face by face (on two threads when there are
+  // several faces, as the cylinder's three): curved faces, seams and poles, with the vertices'
+  // mean off the origin.
   const TopoDS_Shape shapes[] = {BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(5, -3, 2), gp_Dir(0, 1, 1)), 1.5, 4.0).Shape(),
                                  BRepPrimAPI_MakeSphere(gp_Pnt(-7, 2, 9), 2.0).Shape()};
   for (const TopoDS_Shape& shape : shapes) {

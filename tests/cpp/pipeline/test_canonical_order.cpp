@@ -1,8 +1,9 @@
-// MedialMesh::sort_canonically against the order it promises, computed here the plain way (sort
-// the vertices by (position, radius), renumber, rotate each polygon to its smallest vertex towards
-// the smaller neighbour, sort the faces by (solid, corners, kind)): on random meshes that take its
-// bucket path (one solid, spread-out x), its fallbacks (two solids; most vertices at one x), and
-// with exactly repeated vertices.
+// MedialMesh::sort_canonically against the order it promises, computed here the plain way on one
+// thread (sort the vertices by (position, radius), with repeated vertices in std::sort's order of
+// their indices; renumber; rotate each polygon to its smallest vertex towards the smaller
+// neighbour; sort the faces by (solid, corners, kind) and the edges): array for array, on random
+// meshes that take its bucket path (one solid, spread-out x; a small mesh on one thread), its
+// fallbacks (two solids; most vertices at one x), and with exactly repeated vertices.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,6 +21,7 @@ struct Shape {
   int solids = 1;
   double plane_share = 0.0;  ///< vertices with x = 0
   double repeat_share = 0.0;  ///< vertices that copy an earlier one exactly
+  int vertices = 30000, faces = 25000;
 };
 
 MedialMesh random_mesh(const Shape& shape, unsigned seed) {
@@ -27,7 +29,7 @@ MedialMesh random_mesh(const Shape& shape, unsigned seed) {
   std::uniform_real_distribution<double> coord(-5.0, 5.0);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   MedialMesh m;
-  const int nv = 30000;
+  const int nv = shape.vertices;
   for (int v = 0; v < nv; ++v) {
     if (v > 0 && unit(rng) < shape.repeat_share) {
       const int w = static_cast<int>(rng() % v);
@@ -39,7 +41,7 @@ MedialMesh random_mesh(const Shape& shape, unsigned seed) {
     m.vertices.push_back({x, coord(rng), coord(rng)});
     m.radius.push_back(unit(rng));
   }
-  for (int f = 0; f < 25000; ++f) {
+  for (int f = 0; f < shape.faces; ++f) {
     const int n = 3 + static_cast<int>(rng() % 4);
     std::vector<int> poly;
     while (static_cast<int>(poly.size()) < n) {
@@ -47,6 +49,10 @@ MedialMesh random_mesh(const Shape& shape, unsigned seed) {
       if (std::find(poly.begin(), poly.end(), v) == poly.end()) poly.push_back(v);
     }
     m.add_face(poly, static_cast<FaceKind>(rng() % 3), static_cast<int>(rng() % shape.solids));
+  }
+  for (int e = 0; e < shape.faces / 50; ++e) {
+    m.edges.push_back({static_cast<int>(rng() % nv), static_cast<int>(rng() % nv)});
+    m.edge_solid.push_back(static_cast<int>(rng() % shape.solids));
   }
   return m;
 }
@@ -65,7 +71,60 @@ std::vector<FaceText> face_texts(const MedialMesh& m) {
   return out;
 }
 
+// The canonical order, plainly.
+MedialMesh plain_canonical(const MedialMesh& given) {
+  MedialMesh m = given;
+  const std::size_t nv = m.num_vertices();
+  auto less = [&](int a, int b) {
+    const Point3 &x = given.vertices[a], &y = given.vertices[b];
+    return x < y || (x == y && given.radius[a] < given.radius[b]);
+  };
+  std::vector<int> order(nv);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), less);
+  std::vector<int> new_index(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    new_index[order[i]] = static_cast<int>(i);
+    m.vertices[i] = given.vertices[order[i]];
+    m.radius[i] = given.radius[order[i]];
+  }
+  std::vector<std::tuple<int, std::vector<int>, FaceKind>> faces;
+  for (std::size_t f = 0; f < given.num_faces(); ++f) {
+    std::vector<int> p;
+    for (int k = 0; k < given.face_size(f); ++k) p.push_back(new_index[given.face(f)[k]]);
+    std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+    if (p.size() > 2 && p.back() < p[1]) std::reverse(p.begin() + 1, p.end());
+    faces.emplace_back(given.solid[f], p, given.kind[f]);
+  }
+  std::sort(faces.begin(), faces.end());
+  m.face_vertices.clear();
+  m.face_start.assign(1, 0);
+  m.kind.clear();
+  m.solid.clear();
+  for (const auto& [solid, p, kind] : faces) m.add_face(p, kind, solid);
+  std::vector<std::array<int, 3>> segs;
+  for (std::size_t e = 0; e < given.edges.size(); ++e) {
+    const int a = new_index[given.edges[e][0]], b = new_index[given.edges[e][1]];
+    segs.push_back({given.edge_solid[e], std::min(a, b), std::max(a, b)});
+  }
+  std::sort(segs.begin(), segs.end());
+  for (std::size_t e = 0; e < segs.size(); ++e) m.edges[e] = {segs[e][1], segs[e][2]}, m.edge_solid[e] = segs[e][0];
+  return m;
+}
+
+void expect_same_arrays(const MedialMesh& a, const MedialMesh& b) {
+  EXPECT_EQ(a.vertices, b.vertices);
+  EXPECT_EQ(a.radius, b.radius);
+  EXPECT_EQ(a.face_start, b.face_start);
+  EXPECT_EQ(a.face_vertices, b.face_vertices);
+  EXPECT_EQ(a.kind, b.kind);
+  EXPECT_EQ(a.solid, b.solid);
+  EXPECT_EQ(a.edges, b.edges);
+  EXPECT_EQ(a.edge_solid, b.edge_solid);
+}
+
 void expect_canonical(const MedialMesh& sorted, const MedialMesh& given) {
+  expect_same_arrays(sorted, plain_canonical(given));
   // Vertices by (position, radius).
   for (std::size_t v = 1; v < sorted.num_vertices(); ++v) {
     const auto a = std::tie(sorted.vertices[v - 1], sorted.radius[v - 1]);
@@ -109,6 +168,13 @@ TEST(CanonicalOrder, OneSolidSpreadOut) {
   expect_canonical(m, given);
 }
 
+TEST(CanonicalOrder, SmallMeshOnOneThread) {
+  const MedialMesh given = random_mesh({1, 0.0, 0.0, 900, 700}, 5);
+  MedialMesh m = given;
+  m.sort_canonically();
+  expect_canonical(m, given);
+}
+
 TEST(CanonicalOrder, TwoSolids) {
   const MedialMesh given = random_mesh({2, 0.0, 0.0}, 2);
   MedialMesh m = given;
@@ -129,9 +195,7 @@ TEST(CanonicalOrder, RepeatedVerticesAndTheSameAnswerTwice) {
   m.sort_canonically();
   expect_canonical(m, given);
   again.sort_canonically();
-  EXPECT_EQ(m.vertices, again.vertices);
-  EXPECT_EQ(m.face_vertices, again.face_vertices);
-  EXPECT_EQ(m.face_start, again.face_start);
+  expect_same_arrays(m, again);
 }
 
 }  // namespace

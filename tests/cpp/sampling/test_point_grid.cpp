@@ -24,7 +24,7 @@ TEST(PointGrid, AnyNearVisitsEveryPointWithinTheRadius) {
       points.push_back({coord(rng), coord(rng), coord(rng)});
       grid.insert(points.back(), i);
     }
-    // Points on cell walls and at exactly the radius from a query too.
+    // Points on cell walls too.
     for (int i = 0; i < 200; ++i) {
       const Point3 p{std::round(coord(rng)), std::round(coord(rng)), coord(rng)};
       points.push_back(p);
@@ -42,6 +42,39 @@ TEST(PointGrid, AnyNearVisitsEveryPointWithinTheRadius) {
           if (distance2(points[id], p) <= radius * radius)
             ASSERT_TRUE(seen.count(id)) << "point " << id << " within " << radius << " of a query near " << origin;
       }
+    }
+  }
+}
+
+TEST(PointGrid, AnyNearVisitsPointsAtExactlyTheRadius) {
+  // p -/+ radius along each axis (as the doubles round it, and one step inward), with p and the
+  // radius such that those points fall on or next to cell walls, near the origin and far off.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const double origin : {0.0, 3.0e5, -7.0e6}) {
+    for (int q = 0; q < 400; ++q) {
+      const double cell = 0.5 + unit(rng);
+      const double radius = q % 2 ? cell * (0.25 + 0.75 * unit(rng)) : cell * std::round(4 * unit(rng) + 1) / 4;
+      const double wall = cell * std::round(origin / cell + 20 * unit(rng));  // p - radius on a cell wall
+      const Point3 p{wall + radius, origin + 10 * unit(rng), origin - 3 * unit(rng)};
+      PointGrid grid(cell);
+      std::vector<Point3> points;
+      for (int a = 0; a < 3; ++a)
+        for (const double sign : {-1.0, 1.0}) {
+          Point3 x = p;
+          x[a] = p[a] + sign * radius;
+          points.push_back(x);
+          x[a] = std::nextafter(x[a], p[a]);
+          points.push_back(x);
+        }
+      for (std::size_t i = 0; i < points.size(); ++i) grid.insert(points[i], static_cast<int>(i));
+      std::set<int> seen;
+      grid.any_near(p, radius, [&](int id) {
+        seen.insert(id);
+        return false;
+      });
+      for (std::size_t i = 0; i < points.size(); ++i)
+        if (distance2(points[i], p) <= radius * radius) ASSERT_TRUE(seen.count(static_cast<int>(i))) << "point " << i;
     }
   }
 }
