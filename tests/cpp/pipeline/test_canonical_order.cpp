@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/types.h"
+#include "support/same_mesh.h"
 
 namespace cadmedial {
 namespace {
@@ -112,19 +113,8 @@ MedialMesh plain_canonical(const MedialMesh& given) {
   return m;
 }
 
-void expect_same_arrays(const MedialMesh& a, const MedialMesh& b) {
-  EXPECT_EQ(a.vertices, b.vertices);
-  EXPECT_EQ(a.radius, b.radius);
-  EXPECT_EQ(a.face_start, b.face_start);
-  EXPECT_EQ(a.face_vertices, b.face_vertices);
-  EXPECT_EQ(a.kind, b.kind);
-  EXPECT_EQ(a.solid, b.solid);
-  EXPECT_EQ(a.edges, b.edges);
-  EXPECT_EQ(a.edge_solid, b.edge_solid);
-}
-
 void expect_canonical(const MedialMesh& sorted, const MedialMesh& given) {
-  expect_same_arrays(sorted, plain_canonical(given));
+  test::expect_same_mesh(sorted, plain_canonical(given));
   // Vertices by (position, radius).
   for (std::size_t v = 1; v < sorted.num_vertices(); ++v) {
     const auto a = std::tie(sorted.vertices[v - 1], sorted.radius[v - 1]);
@@ -195,7 +185,7 @@ TEST(CanonicalOrder, RepeatedVerticesAndTheSameAnswerTwice) {
   m.sort_canonically();
   expect_canonical(m, given);
   again.sort_canonically();
-  expect_same_arrays(m, again);
+  test::expect_same_mesh(m, again);
 }
 
 }  // namespace

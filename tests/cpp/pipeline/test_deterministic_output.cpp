@@ -8,6 +8,7 @@
 #include "core/pipeline/compute_medial_axis.h"
 #include "core/io/read_shape.h"
 #include "support/engine_run.h"
+#include "support/same_mesh.h"
 #include "support/solids.h"
 
 namespace cadmedial::test {
@@ -19,18 +20,6 @@ ComputeResult run(const TopoDS_Shape& shape, double spacing) {
   return compute_medial_axis(shape, params);
 }
 
-void expect_same(const MedialMesh& a, const MedialMesh& b) {
-  ASSERT_EQ(a.num_vertices(), b.num_vertices());
-  ASSERT_EQ(a.num_faces(), b.num_faces());
-  ASSERT_EQ(a.num_edges(), b.num_edges());
-  EXPECT_EQ(a.vertices, b.vertices);
-  EXPECT_EQ(a.radius, b.radius);
-  EXPECT_EQ(a.face_start, b.face_start);
-  EXPECT_EQ(a.face_vertices, b.face_vertices);
-  EXPECT_EQ(a.kind, b.kind);
-  EXPECT_EQ(a.edges, b.edges);
-}
-
 TEST(DeterministicOutput, SameSolidTwiceGivesTheSameMesh) {
   const TopoDS_Solid block = make_block_with_hole(10, 8, 6, 2);
   const ComputeResult first = run(block, 0.4);
@@ -38,7 +27,7 @@ TEST(DeterministicOutput, SameSolidTwiceGivesTheSameMesh) {
   std::vector<std::vector<double>> clutter(1000, std::vector<double>(37));
   const ComputeResult second = run(block, 0.4);
   ASSERT_GT(first.mesh.num_faces(), 0u);
-  expect_same(first.mesh, second.mesh);
+  expect_same_mesh(first.mesh, second.mesh);
 }
 
 // Non-concave corners are joined to the Voronoi edges around them (ProcNonconcaveCorners), which
@@ -53,7 +42,7 @@ TEST(DeterministicOutput, CornerCompletionDoesNotDependOnMemory) {
   ASSERT_GT(first.stats.solids.at(0).nonconcave_corners, 8u);
   for (std::size_t clutter_size : {13u, 997u}) {
     std::vector<std::vector<char>> clutter(clutter_size, std::vector<char>(clutter_size % 89 + 8));
-    expect_same(first.mesh, run(part, 14.26).mesh);
+    expect_same_mesh(first.mesh, run(part, 14.26).mesh);
   }
 }
 
