@@ -28,6 +28,7 @@
 #include <GeomLProp_CLProps.hxx>
 #include <Geom_Curve.hxx>
 #include <Standard_Failure.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -983,7 +984,10 @@ SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) 
   // one core); then summed in order, as one pass did.
   const int nf = features.faces.Extent(), ne = features.edges.Extent();
   m.faces.assign(nf, {0.0, 0.0, false});
+  // A fault inside OpenCASCADE on either thread becomes a Standard_Failure (compute_medial_axis
+  // turns it into a GeometryError), as on the calling thread.
   internal::on_two_cores_each(static_cast<std::size_t>(nf), [&](std::size_t k) {
+    OCC_CATCH_SIGNALS
     const int fi = static_cast<int>(k) + 1;
     const TopoDS_Face& face = TopoDS::Face(features.faces(fi));
     GProp_GProps props;
@@ -1010,6 +1014,7 @@ SolidMeasure measure_solid(const TopoDS_Solid& solid, const Features& features) 
   for (const SolidMeasure::Piece& f : m.faces) m.area += f.size;
   std::vector<SolidMeasure::Piece> edges(ne, {0.0, 0.0, false});
   internal::on_two_cores_each(static_cast<std::size_t>(ne), [&](std::size_t e) {
+    OCC_CATCH_SIGNALS
     const EdgeKind k = features.edge_kind[e];
     if (k != EdgeKind::Convex && k != EdgeKind::Concave && k != EdgeKind::Mixed) return;
     const BRepAdaptor_Curve curve(TopoDS::Edge(features.edges(static_cast<int>(e) + 1)));
