@@ -62,6 +62,22 @@ struct Axis {
 
 }  // namespace
 
+StoredPolygon stored_polygon(const CSLib_Class2d& poly) {
+  StoredPolygon p;
+  const int n = poly.*member(PolyN{});
+  p.umin = poly.*member(PolyUMin{});
+  p.umax = poly.*member(PolyUMax{});
+  p.vmin = poly.*member(PolyVMin{});
+  p.vmax = poly.*member(PolyVMax{});
+  if (n <= 0) return p;  // CSLib_Class2d leaves its tolerances unset then
+  p.tolu = poly.*member(PolyTolU{});
+  p.tolv = poly.*member(PolyTolV{});
+  const TColStd_Array1OfReal& xs = *(poly.*member(PolyX{}));
+  const TColStd_Array1OfReal& ys = *(poly.*member(PolyY{}));
+  for (int k = 0; k <= n; ++k) p.x.push_back(xs(k)), p.y.push_back(ys(k));
+  return p;
+}
+
 LatticeClassifier::LatticeClassifier(const BRepTopAdaptor_FClass2d& classifier, const BRepAdaptor_Surface& surface,
                                      const UvLattice& lattice)
     : classifier_(classifier), lat_(lattice) {
@@ -90,6 +106,11 @@ LatticeClassifier::LatticeClassifier(const BRepTopAdaptor_FClass2d& classifier, 
   region_.assign(static_cast<size_t>(lat_.nu) * static_cast<size_t>(lat_.nv), 0);
   mark_polygons();
   label_regions();
+  const TColStd_SequenceOfInteger& orientation = classifier_.*member(TabOrien{});
+  for (int w = 1; w <= wires.Length(); ++w) {
+    polygons_.emplace_back(stored_polygon(*static_cast<const CSLib_Class2d*>(wires(w))));
+    orientation_.push_back(orientation(w));
+  }
 }
 
 // Marks every cell that a polygon's tolerance box may reach: each polygon edge is cut into pieces
@@ -184,18 +205,39 @@ void LatticeClassifier::label_regions() {
   region_state_.assign(static_cast<size_t>(regions), State::Unknown);
 }
 
-// The first point asked for a set of points that share their state is classified by Perform.
+// Perform(uv, Standard_False)'s loop over the wires, with TabOrien(1) != -1 (usable_): IN unless a
+// wire says otherwise; a point "on" a wire (within its tolerance) is where Perform asks
+// BRepClass_FaceClassifier instead: left to Perform.
+LatticeClassifier::State LatticeClassifier::wires_state(const gp_Pnt2d& uv) const {
+  for (size_t n = 0; n < polygons_.size(); ++n) {
+    const int cur = polygons_[n].si_dans(uv.X(), uv.Y());
+    if (cur == 1) {
+      if (orientation_[n] == 0) return State::Out;
+    } else if (cur == -1) {
+      if (orientation_[n] == 1) return State::Out;
+    } else {
+      return State::Ask;
+    }
+  }
+  return State::In;
+}
+
+// The first point asked for a set of points that share their state is classified as Perform
+// would (no point of such a set is "on" a wire; if one were, Perform itself answers).
 LatticeClassifier::State LatticeClassifier::remember(State& slot, const gp_Pnt2d& uv) {
   if (slot == State::Unknown) {
-    const TopAbs_State st = classifier_.Perform(uv, Standard_False);
-    slot = st == TopAbs_IN ? State::In : st == TopAbs_OUT ? State::Out : State::Ask;
+    slot = wires_state(uv);
+    if (slot == State::Ask) {
+      const TopAbs_State st = classifier_.Perform(uv, Standard_False);
+      slot = st == TopAbs_IN ? State::In : st == TopAbs_OUT ? State::Out : State::Ask;
+    }
   }
   return slot;
 }
 
 LatticeClassifier::State LatticeClassifier::polygon_state(long i, long j, const gp_Pnt2d& uv) {
   const std::int32_t r = region_[static_cast<size_t>(i * lat_.nv + j)];
-  if (r < 0) return State::Ask;
+  if (r < 0) return wires_state(uv);
   return remember(region_state_[static_cast<size_t>(r)], uv);
 }
 
@@ -209,7 +251,7 @@ LatticeClassifier::State LatticeClassifier::polygon_state(const gp_Pnt2d& uv) {
   // Outside a polygon's grown box, its test returns "outside" without looking at its edges (the
   // box test) or finds no crossing and no point within tolerance (the parity test).
   for (const Box& b : wire_boxes_)
-    if (uv.X() >= b.u0 && uv.X() <= b.u1 && uv.Y() >= b.v0 && uv.Y() <= b.v1) return State::Ask;
+    if (uv.X() >= b.u0 && uv.X() <= b.u1 && uv.Y() >= b.v0 && uv.Y() <= b.v1) return wires_state(uv);
   return remember(far_state_, uv);
 }
 

@@ -7,10 +7,16 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
+#include <CSLib_Class2d.hxx>
 #include <TopAbs_State.hxx>
 #include <gp_Pnt2d.hxx>
 
+#include "polygon_classifier.h"
+
 namespace cadmedial {
+
+/// The polygon as `polygon` stores it (read from its private fields, as LatticeClassifier does).
+StoredPolygon stored_polygon(const CSLib_Class2d& polygon);
 
 /// Cells of a face's candidate lattice: cell (i, j) is [u0 + i du, u0 + (i+1) du] x
 /// [v0 + j dv, v0 + (j+1) dv], for 0 <= i < nu, 0 <= j < nv.
@@ -23,9 +29,13 @@ struct UvLattice {
 /// box meets no polygon gets each polygon's inside/outside parity, and so the same answer as
 /// every point of a connected set that no tolerance box around the polygons reaches. So the
 /// lattice cells those boxes may reach are marked, the other cells fall into connected regions,
-/// and Perform runs once per region (on the first point asked there), once for all points away
-/// from every polygon's bounding box, and for every point in a marked cell. On a periodic
-/// surface Perform retries a point outside at shifted copies; so does this, in the same order.
+/// and Perform's polygon tests run once per region (on the first point asked there), once for all
+/// points away from every polygon's bounding box, and for every point in a marked cell, there
+/// through PolygonClassifier (the same answers from the polygon edges near the point; Perform
+/// scans every edge five times, and builds a surface adaptor, on each call). Only a point within
+/// a polygon's tolerance, where Perform falls back to BRepClass_FaceClassifier, is left to
+/// Perform (Ask). On a periodic surface Perform retries a point outside at shifted copies; so
+/// does this, in the same order.
 ///
 /// Reads the classifier's polygons, which OpenCASCADE keeps private. Written from OCC 7.7.0's
 /// BRepTopAdaptor_FClass2d.cxx and CSLib_Class2d.cxx and checked against 7.6.3 (Debian 12) with
@@ -48,12 +58,17 @@ class LatticeClassifier {
   /// The same for any point.
   Answer classify(const gp_Pnt2d& uv);
 
+  /// Whether the points of cell (i, j) may get different answers (a polygon's tolerance box may
+  /// reach the cell); else they all get the same.
+  bool mixed(long i, long j) const { return !usable_ || region_[static_cast<size_t>(i * lat_.nv + j)] < 0; }
+
  private:
   // Perform(uv, Standard_False): the polygons' answer without the periodic retries.
   enum class State : std::uint8_t { Unknown, In, Out, Ask };
   State polygon_state(long i, long j, const gp_Pnt2d& uv);
   State polygon_state(const gp_Pnt2d& uv);
   State remember(State& slot, const gp_Pnt2d& uv);
+  State wires_state(const gp_Pnt2d& uv) const;
   Answer with_retries(const gp_Pnt2d& uv, State first);
   Answer checked(Answer a, const gp_Pnt2d& uv) const;
   void mark_polygons();
@@ -70,6 +85,8 @@ class LatticeClassifier {
   double umin_ = 0, umax_ = 0, vmin_ = 0, vmax_ = 0;  ///< the classifier's own bounds
   UvLattice lat_;
   std::vector<Box> wire_boxes_;       ///< each polygon's points' box, grown by its tolerance
+  std::vector<PolygonClassifier> polygons_;  ///< per wire, in the classifier's order
+  std::vector<int> orientation_;             ///< per wire: the classifier's TabOrien
   std::vector<std::int32_t> region_;  ///< per cell (i * nv + j): its region, or -1 if marked
   std::vector<State> region_state_;   ///< per region
   State far_state_ = State::Unknown;  ///< outside every wire box

@@ -847,7 +847,9 @@ class Sampler {
       for (long j = 0; j < nvv; ++j) {
         const double u = u0 + du * (i + 0.5 + jitter(rng)), v = v0 + dv * (j + 0.5 + jitter(rng));
         const LatticeClassifier::Answer where = inside.classify(i, j, gp_Pnt2d(u, v));
-        if (where == LatticeClassifier::Answer::Out) continue;
+        const bool out = where == LatticeClassifier::Answer::Out;
+        // A cell cut finer below may have points inside where this one is outside.
+        if (out && (!refine || !inside.mixed(i, j))) continue;
         if (!refine) {
           try_face_candidate(fi, u, v, where, sp_.face, props, in, own);
           continue;
@@ -855,7 +857,7 @@ class Sampler {
         const double h = field_.at(to_point(surf.Value(u, v)));
         const int m = std::min(8, static_cast<int>(std::ceil(plan.spacing / h - 1e-9)));
         if (m <= 1) {
-          try_face_candidate(fi, u, v, where, h, props, in, own);
+          if (!out) try_face_candidate(fi, u, v, where, h, props, in, own);
           continue;
         }
         for (int a = 0; a < m; ++a)
