@@ -15,8 +15,8 @@ SpacingField::SpacingField(double spacing, const std::vector<Point3>& points, co
   smallest_ = *std::min_element(local.begin(), local.end());
   // A point's spacing holds within one (uniform) spacing of it, the first pass's sample spacing,
   // and reaches the uniform spacing (spacing - local) / gradation farther: at most this far.
-  const double reach = spacing + (spacing - smallest_) / gradation;
-  grid_ = PointGrid(reach);
+  reach_ = reach();
+  grid_ = PointGrid(reach_);
   // Smallest first; a point within 10 % of what the kept points already give is left out (the
   // field is then at most 10 % coarser there), which keeps the queries short on large thin walls.
   std::vector<int> order(points.size());
@@ -28,18 +28,64 @@ SpacingField::SpacingField(double spacing, const std::vector<Point3>& points, co
     points_.push_back(points[k]);
     local_.push_back(local[k]);
   }
+  index_cells();
+}
+
+void SpacingField::index_cells() {
+  std::array<int64_t, 3> hi{0, 0, 0};
+  for (int a = 0; a < 3; ++a) lo_[a] = hi[a] = cell_of(points_[0][a]);
+  for (const Point3& p : points_)
+    for (int a = 0; a < 3; ++a) lo_[a] = std::min(lo_[a], cell_of(p[a])), hi[a] = std::max(hi[a], cell_of(p[a]));
+  double cells = 1;
+  for (int a = 0; a < 3; ++a) cells *= static_cast<double>(hi[a] - lo_[a] + 1);
+  // A box far larger than the points need (a few far-apart thin walls): keep the hash grid.
+  if (!(cells <= 4.0 * static_cast<double>(points_.size()) + 65536.0)) return;
+  for (int a = 0; a < 3; ++a) size_[a] = hi[a] - lo_[a] + 1;
+  const auto index = [&](const Point3& p) {
+    return static_cast<size_t>(((cell_of(p[0]) - lo_[0]) * size_[1] + (cell_of(p[1]) - lo_[1])) * size_[2] +
+                               (cell_of(p[2]) - lo_[2]));
+  };
+  cell_start_.assign(static_cast<size_t>(cells) + 1, 0);
+  for (const Point3& p : points_) ++cell_start_[index(p) + 1];
+  for (size_t c = 1; c < cell_start_.size(); ++c) cell_start_[c] += cell_start_[c - 1];
+  items_.resize(points_.size());
+  std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (size_t k = 0; k < points_.size(); ++k) items_[static_cast<size_t>(fill[index(points_[k])]++)] = {points_[k], local_[k]};
 }
 
 double SpacingField::at(const Point3& x) const {
   if (points_.empty()) return spacing_;
   double h = spacing_;
-  const double reach = spacing_ + (spacing_ - smallest_) / gradation_;
-  grid_.any_near(x, reach, [&](int k) {
-    if (local_[k] >= h) return false;
-    const double d = std::sqrt(distance2(points_[k], x));
-    h = std::min(h, local_[k] + gradation_ * std::max(0.0, d - spacing_));
-    return false;
-  });
+  if (cell_start_.empty()) {
+    grid_.any_near(x, reach_, [&](int k) {
+      if (local_[k] >= h) return false;
+      const double d = std::sqrt(distance2(points_[k], x));
+      h = std::min(h, local_[k] + gradation_ * std::max(0.0, d - spacing_));
+      return false;
+    });
+    return h;
+  }
+  // The cells grid_.any_near(x, reach_) visits (cells as large as the reach: the block of one
+  // around x's cell, within the rounding margin of x -/+ reach), here in the dense box. A cell's
+  // points come smallest local first: once one cannot lower h, the rest cannot either.
+  const double margin = reach_ + 1e-12 * (reach_ + std::abs(x[0]) + std::abs(x[1]) + std::abs(x[2]));
+  int64_t from[3], to[3];
+  for (int a = 0; a < 3; ++a) {
+    const int64_t c = cell_of(x[a]);
+    from[a] = std::max({cell_of(x[a] - margin), c - 1, lo_[a]}) - lo_[a];
+    to[a] = std::min({cell_of(x[a] + margin), c + 1, lo_[a] + size_[a] - 1}) - lo_[a];
+  }
+  for (int64_t i = from[0]; i <= to[0]; ++i)
+    for (int64_t j = from[1]; j <= to[1]; ++j)
+      for (int64_t k = from[2]; k <= to[2]; ++k) {
+        const size_t c = static_cast<size_t>((i * size_[1] + j) * size_[2] + k);
+        for (int e = cell_start_[c]; e < cell_start_[c + 1]; ++e) {
+          const Item& it = items_[static_cast<size_t>(e)];
+          if (it.local >= h) break;
+          const double d = std::sqrt(distance2(it.point, x));
+          h = std::min(h, it.local + gradation_ * std::max(0.0, d - spacing_));
+        }
+      }
   return h;
 }
 

@@ -2,6 +2,9 @@
 // for it (thin_walls.h), growing back gradually away from them.
 #pragma once
 
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "../types.h"
@@ -34,10 +37,24 @@ class SpacingField {
   double on_edge(int e) const { return e >= 0 && e < static_cast<int>(edge_.size()) ? edge_[e] : spacing_; }
 
  private:
-  double spacing_, gradation_ = 1.0, smallest_ = spacing_;
+  double reach() const { return spacing_ + (spacing_ - smallest_) / gradation_; }
+  int64_t cell_of(double v) const { return static_cast<int64_t>(std::floor(v / reach_)); }
+  void index_cells();
+
+  double spacing_, gradation_ = 1.0, smallest_ = spacing_, reach_ = spacing_;
   std::vector<Point3> points_;
   std::vector<double> local_, face_, edge_;
   PointGrid grid_;  // cells as large as the farthest a point's spacing spreads
+  // The same cells in a dense box once the field is made: at() runs for every lattice cell of a
+  // refined face and every sample of the first pass, and 27 hash lookups a query were most of it.
+  // Per cell, its points in grid_'s order (the order they were added: smallest local first).
+  struct Item {
+    Point3 point;
+    double local;
+  };
+  std::vector<int> cell_start_;
+  std::vector<Item> items_;
+  std::array<int64_t, 3> lo_{0, 0, 0}, size_{0, 0, 0};
 };
 
 /// Where the first sampling shows walls thinner than its spacing allows (radii from

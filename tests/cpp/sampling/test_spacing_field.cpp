@@ -3,6 +3,8 @@
 // the others already cover are dropped without changing the field by more than 10 %.
 #include <cmath>
 #include <limits>
+#include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +49,38 @@ TEST(SpacingField, TheSmallestNearbyValueWinsAndCoveredPointsChangeItByAtMostTen
     EXPECT_LE(f.at({x, 0, 0}), 1.1 * exact + 1e-12) << x;
     EXPECT_GE(f.at({x, 0, 0}), exact - 1e-12) << x;
   }
+}
+
+TEST(SpacingField, DenseCellsGiveTheHashGridsValues) {
+  // Thin-wall points over a compact box: at() looks them up in a dense box of cells. One more
+  // point far off makes that box too large, and at() asks the hash grid instead; it is beyond
+  // every query's reach, so the two fields must agree bit for bit (and be no finer than a brute
+  // force over all the points: dropped points can only make it coarser).
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> coord(-6, 6), local(0.25, 0.9);
+  std::vector<Point3> points;
+  std::vector<double> locals;
+  for (int k = 0; k < 4000; ++k) points.push_back({coord(rng), coord(rng), 0.1 * coord(rng)}), locals.push_back(local(rng));
+  const SpacingField dense(1.0, points, locals, 0.5);
+  points.push_back({1e5, -1e5, 1e5});
+  locals.push_back(0.3);
+  const SpacingField hashed(1.0, points, locals, 0.5);
+  std::uniform_real_distribution<double> query(-9, 9);
+  int finer = 0;
+  for (int q = 0; q < 20000; ++q) {
+    const Point3 x{query(rng), query(rng), 0.3 * query(rng)};
+    const double h = dense.at(x);
+    ASSERT_EQ(h, hashed.at(x)) << x[0] << " " << x[1] << " " << x[2];
+    double exact = 1.0;
+    for (size_t k = 0; k + 1 < points.size(); ++k) {
+      const double d = std::sqrt((points[k][0] - x[0]) * (points[k][0] - x[0]) + (points[k][1] - x[1]) * (points[k][1] - x[1]) +
+                                 (points[k][2] - x[2]) * (points[k][2] - x[2]));
+      exact = std::min(exact, locals[k] + 0.5 * std::max(0.0, d - 1.0));
+    }
+    ASSERT_GE(h, exact - 1e-12);
+    finer += h < 1.0;
+  }
+  EXPECT_GT(finer, 10000);
 }
 
 TEST(SpacingField, ThinWallSpacingIsHalfTheRadiusAtLeastTheFloor) {
