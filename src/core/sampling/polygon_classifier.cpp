@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
 #include <utility>
 
 namespace cadmedial {
@@ -16,21 +18,36 @@ double transform2d(double u, double umin, double umaxmumin) { return umaxmumin >
 }  // namespace
 
 PolygonClassifier::PolygonClassifier(StoredPolygon polygon) : p_(std::move(polygon)) {
+  if (p_.x.size() != p_.y.size()) throw std::invalid_argument("PolygonClassifier: x and y differ in length");
   const int n = p_.n();
   if (n <= 0) return;
   double y1 = p_.y[0];
   y0_ = p_.y[0];
-  for (double y : p_.y) y0_ = std::min(y0_, y), y1 = std::max(y1, y);
-  // About two edges a band; one band when the polygon has no height (or is not finite).
-  bands_ = std::clamp(n / 2, 1, 1 << 16);
+  bool finite = true;
+  for (double y : p_.y) y0_ = std::min(y0_, y), y1 = std::max(y1, y), finite = finite && std::isfinite(y);
+  // About two edges a band; one band when the polygon has no height or a coordinate that is not
+  // finite (a NaN would fall in no band of its edges).
+  bands_ = finite ? std::clamp(n / 2, 1, 1 << 16) : 1;
   band_height_ = (y1 - y0_) / bands_;
   if (!(band_height_ > 0) || !std::isfinite(band_height_)) bands_ = 1, band_height_ = 1;
   // Each edge in every band its y range meets. band_of is monotone in y, so an edge whose range
   // holds a height is in that height's band.
-  std::vector<int> count(static_cast<size_t>(bands_) + 1, 0);
   auto range = [&](int i) {
     return std::pair<int, int>(band_of(std::min(p_.y[i], p_.y[i + 1])), band_of(std::max(p_.y[i], p_.y[i + 1])));
   };
+  // Many edges that span many bands (a comb's teeth) would fill bands x edges: fewer bands then,
+  // so that the lists hold at most about 8 entries an edge.
+  for (;;) {
+    std::int64_t entries = 0;
+    for (int i = 0; i < n; ++i) {
+      const auto [b0, b1] = range(i);
+      entries += b1 - b0 + 1;
+    }
+    if (bands_ == 1 || entries <= 8 * static_cast<std::int64_t>(n)) break;
+    bands_ = std::max(1, static_cast<int>(static_cast<double>(bands_) * 8.0 * n / static_cast<double>(entries)));
+    band_height_ = (y1 - y0_) / bands_;
+  }
+  std::vector<int> count(static_cast<size_t>(bands_) + 1, 0);
   for (int i = 0; i < n; ++i) {
     const auto [b0, b1] = range(i);
     for (int b = b0; b <= b1; ++b) ++count[static_cast<size_t>(b) + 1];

@@ -32,6 +32,7 @@ SpacingField::SpacingField(double spacing, const std::vector<Point3>& points, co
 }
 
 void SpacingField::index_cells() {
+  if (points_.empty()) return;
   std::array<int64_t, 3> hi{0, 0, 0};
   for (int a = 0; a < 3; ++a) lo_[a] = hi[a] = cell_of(points_[0][a]);
   for (const Point3& p : points_)
@@ -55,12 +56,16 @@ void SpacingField::index_cells() {
 
 double SpacingField::at(const Point3& x) const {
   if (points_.empty()) return spacing_;
+  // Not a point on the part: no point of the field is near it.
+  if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) return spacing_;
   double h = spacing_;
+  const auto lower = [&](const Point3& p, double local) {
+    const double d = std::sqrt(distance2(p, x));
+    h = std::min(h, local + gradation_ * std::max(0.0, d - spacing_));
+  };
   if (cell_start_.empty()) {
     grid_.any_near(x, reach_, [&](int k) {
-      if (local_[k] >= h) return false;
-      const double d = std::sqrt(distance2(points_[k], x));
-      h = std::min(h, local_[k] + gradation_ * std::max(0.0, d - spacing_));
+      if (local_[k] < h) lower(points_[k], local_[k]);
       return false;
     });
     return h;
@@ -68,6 +73,10 @@ double SpacingField::at(const Point3& x) const {
   // The cells grid_.any_near(x, reach_) visits (cells as large as the reach: the block of one
   // around x's cell, within the rounding margin of x -/+ reach), here in the dense box. A cell's
   // points come smallest local first: once one cannot lower h, the rest cannot either.
+  for (int a = 0; a < 3; ++a) {
+    const double c = std::floor(x[a] / reach_);
+    if (!(c >= static_cast<double>(lo_[a] - 1) && c <= static_cast<double>(lo_[a] + size_[a]))) return spacing_;
+  }
   const double margin = reach_ + 1e-12 * (reach_ + std::abs(x[0]) + std::abs(x[1]) + std::abs(x[2]));
   int64_t from[3], to[3];
   for (int a = 0; a < 3; ++a) {
@@ -79,12 +88,8 @@ double SpacingField::at(const Point3& x) const {
     for (int64_t j = from[1]; j <= to[1]; ++j)
       for (int64_t k = from[2]; k <= to[2]; ++k) {
         const size_t c = static_cast<size_t>((i * size_[1] + j) * size_[2] + k);
-        for (int e = cell_start_[c]; e < cell_start_[c + 1]; ++e) {
-          const Item& it = items_[static_cast<size_t>(e)];
-          if (it.local >= h) break;
-          const double d = std::sqrt(distance2(it.point, x));
-          h = std::min(h, it.local + gradation_ * std::max(0.0, d - spacing_));
-        }
+        for (int e = cell_start_[c]; e < cell_start_[c + 1] && items_[static_cast<size_t>(e)].local < h; ++e)
+          lower(items_[static_cast<size_t>(e)].point, items_[static_cast<size_t>(e)].local);
       }
   return h;
 }

@@ -28,6 +28,8 @@ class SpacingField {
   bool is_uniform() const { return points_.empty(); }
   double smallest() const { return smallest_; }
   double at(const Point3& x) const;
+  /// Whether at() looks points up in a dense box of cells (else in the hash grid).
+  bool dense() const { return !cell_start_.empty(); }
 
   /// The smallest spacing at the samples of each face and each edge of a sampling of the solid
   /// (Samples::face, Samples::edge; a face also takes its edges' samples' through `edge_faces`):
@@ -45,9 +47,9 @@ class SpacingField {
   std::vector<Point3> points_;
   std::vector<double> local_, face_, edge_;
   PointGrid grid_;  // cells as large as the farthest a point's spacing spreads
-  // The same cells in a dense box once the field is made: at() runs for every lattice cell of a
-  // refined face and every sample of the first pass, and 27 hash lookups a query were most of it.
-  // Per cell, its points in grid_'s order (the order they were added: smallest local first).
+  // The same cells in a dense box once the field is made (at() runs for every lattice cell of a
+  // refined face: a dense box spares it 27 hash lookups). Per cell, its points in grid_'s order,
+  // the order they were added: smallest local first.
   struct Item {
     Point3 point;
     double local;

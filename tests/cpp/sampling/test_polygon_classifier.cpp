@@ -91,6 +91,27 @@ TEST(PolygonClassifier, SameAnswersAsCSLibClass2d) {
       polygons.push_back(p);
     }
   }
+  // An inner wire: the bounds are the face's, larger than the polygon's box.
+  {
+    Polygon2 hole{star(rng, 60, 0.0, 0.0, 1.0), 1e-6, 1e-6, -5.0, -3.0, 4.0, 6.0};
+    polygons.push_back(hole);
+  }
+  // A comb: many teeth, each a pair of edges spanning the polygon's height (band lists would grow
+  // as teeth times bands).
+  {
+    Polygon2 comb{{}, 1e-7, 1e-7, 0, 0, 0, 0};
+    const int teeth = 200;
+    comb.points.push_back(gp_Pnt2d(0, -1));
+    for (int k = 0; k < teeth; ++k) {
+      comb.points.push_back(gp_Pnt2d(k, 10));
+      comb.points.push_back(gp_Pnt2d(k + 0.5, 10));
+      comb.points.push_back(gp_Pnt2d(k + 0.5, 0));
+      comb.points.push_back(gp_Pnt2d(k + 1, 0));
+    }
+    comb.points.push_back(gp_Pnt2d(teeth, -1));
+    comb.umin = 0, comb.umax = teeth, comb.vmin = -1, comb.vmax = 10;
+    polygons.push_back(comb);
+  }
   // A polygon far from the origin with a tiny extent in v (stored unscaled in v).
   Polygon2 flat{{gp_Pnt2d(1e5, 0), gp_Pnt2d(1e5 + 1, 0), gp_Pnt2d(1e5 + 1, 5e-11), gp_Pnt2d(1e5, 5e-11)}, 1e-12, 1e-12,
                 1e5, 0, 1e5 + 1, 5e-11};
@@ -116,6 +137,23 @@ TEST(PolygonClassifier, SameAnswersAsCSLibClass2d) {
   EXPECT_GT(inside, 1000);
   EXPECT_GT(outside, 1000);
   EXPECT_GT(on, 100);
+}
+
+TEST(PolygonClassifier, SameAnswersWithAVertexThatIsNotANumber) {
+  // CSLib_Class2d compares NaN as it compares anything (false): the answers must follow it.
+  std::mt19937 rng(2);
+  std::vector<gp_Pnt2d> pts = star(rng, 40, 0, 0, 1);
+  pts[5].SetY(std::numeric_limits<double>::quiet_NaN());
+  pts[17].SetX(std::numeric_limits<double>::quiet_NaN());
+  TColgp_Array1OfPnt2d arr(1, static_cast<int>(pts.size()));
+  for (size_t k = 0; k < pts.size(); ++k) arr(static_cast<int>(k) + 1) = pts[k];
+  const CSLib_Class2d ref(arr, 1e-6, 1e-6, -1, -1, 1, 1);
+  const PolygonClassifier fast(stored_polygon(ref));
+  std::uniform_real_distribution<double> c(-1.2, 1.2);
+  for (int q = 0; q < 3000; ++q) {
+    const gp_Pnt2d p(c(rng), c(rng));
+    ASSERT_EQ(fast.si_dans(p.X(), p.Y()), ref.SiDans(p)) << p.X() << " " << p.Y();
+  }
 }
 
 TEST(PolygonClassifier, EmptyPolygonIsOnEverywhere) {

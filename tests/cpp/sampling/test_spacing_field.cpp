@@ -65,6 +65,8 @@ TEST(SpacingField, DenseCellsGiveTheHashGridsValues) {
   points.push_back({1e5, -1e5, 1e5});
   locals.push_back(0.3);
   const SpacingField hashed(1.0, points, locals, 0.5);
+  ASSERT_TRUE(dense.dense());
+  ASSERT_FALSE(hashed.dense());
   std::uniform_real_distribution<double> query(-9, 9);
   int finer = 0;
   for (int q = 0; q < 20000; ++q) {
@@ -81,6 +83,23 @@ TEST(SpacingField, DenseCellsGiveTheHashGridsValues) {
     finer += h < 1.0;
   }
   EXPECT_GT(finer, 10000);
+}
+
+TEST(SpacingField, PointsFarOffOrNotFiniteGetTheUniformSpacing) {
+  const SpacingField f(1.0, {{0, 0, 0}, {3, 0, 0}}, {0.25, 0.5}, 0.5);
+  ASSERT_TRUE(f.dense());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const Point3& x : std::vector<Point3>{{nan, 0, 0}, {0, kInf, 0}, {0, 0, -kInf}, {1e300, 0, 0}, {-1e300, 1e300, 0},
+                                             {0, 0, 1e18}, {40, 0, 0}})
+    EXPECT_EQ(f.at(x), 1.0) << x[0] << " " << x[1] << " " << x[2];
+  EXPECT_EQ(f.at({0, 0, 0}), 0.25);
+}
+
+TEST(SpacingField, AFieldWhosePointsAreAllCoveredIsUniform) {
+  // 0.95 is within 10 % of the uniform spacing: the point is dropped, and the field keeps none.
+  const SpacingField f(1.0, {{0, 0, 0}}, {0.95}, 0.5);
+  EXPECT_TRUE(f.is_uniform());
+  EXPECT_EQ(f.at({0, 0, 0}), 1.0);
 }
 
 TEST(SpacingField, ThinWallSpacingIsHalfTheRadiusAtLeastTheFloor) {
