@@ -237,7 +237,7 @@ LatticeClassifier::State LatticeClassifier::remember(State& slot, const gp_Pnt2d
 
 LatticeClassifier::State LatticeClassifier::polygon_state(long i, long j, const gp_Pnt2d& uv) {
   const std::int32_t r = region_[static_cast<size_t>(i * lat_.nv + j)];
-  if (r < 0) return wires_state(uv);
+  if (r < 0) return State::Ask;
   return remember(region_state_[static_cast<size_t>(r)], uv);
 }
 
@@ -251,14 +251,14 @@ LatticeClassifier::State LatticeClassifier::polygon_state(const gp_Pnt2d& uv) {
   // Outside a polygon's grown box, its test returns "outside" without looking at its edges (the
   // box test) or finds no crossing and no point within tolerance (the parity test).
   for (const Box& b : wire_boxes_)
-    if (uv.X() >= b.u0 && uv.X() <= b.u1 && uv.Y() >= b.v0 && uv.Y() <= b.v1) return wires_state(uv);
+    if (uv.X() >= b.u0 && uv.X() <= b.u1 && uv.Y() >= b.v0 && uv.Y() <= b.v1) return State::Ask;
   return remember(far_state_, uv);
 }
 
 // Perform(uv) after its first test found `first`: BRepTopAdaptor_FClass2d::Perform returns IN or
 // ON at once; otherwise, on a periodic surface, it brings u (v) to the period starting at its
 // Umin (Vmin) and tests the shifted copies up to Umax (Vmax) in this order.
-LatticeClassifier::Answer LatticeClassifier::with_retries(const gp_Pnt2d& uv, State first) {
+LatticeClassifier::Answer LatticeClassifier::with_retries(const gp_Pnt2d& uv, State first, bool exact) {
   if (first == State::Ask) return Answer::Ask;
   if (first == State::In) return Answer::In;
   if (!u_periodic_ && !v_periodic_) return Answer::Out;
@@ -297,7 +297,7 @@ LatticeClassifier::Answer LatticeClassifier::with_retries(const gp_Pnt2d& uv, St
       u = uu;
       if (v > vmax_ || !v_periodic_) return Answer::Out;
     }
-    const State s = polygon_state(gp_Pnt2d(u, v));
+    const State s = exact ? wires_state(gp_Pnt2d(u, v)) : polygon_state(gp_Pnt2d(u, v));
     if (s != State::Out) return s == State::In ? Answer::In : Answer::Ask;
   }
   return Answer::Ask;
@@ -309,6 +309,10 @@ LatticeClassifier::Answer LatticeClassifier::classify(long i, long j, const gp_P
 
 LatticeClassifier::Answer LatticeClassifier::classify(const gp_Pnt2d& uv) {
   return checked(usable_ ? with_retries(uv, polygon_state(uv)) : Answer::Ask, uv);
+}
+
+LatticeClassifier::Answer LatticeClassifier::exact(const gp_Pnt2d& uv) {
+  return checked(usable_ ? with_retries(uv, wires_state(uv), true) : Answer::Ask, uv);
 }
 
 // Build with CADMEDIAL_VERIFY_LATTICE_CLASSIFIER defined to check every answer against Perform

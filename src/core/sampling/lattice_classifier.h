@@ -30,12 +30,11 @@ struct UvLattice {
 /// every point of a connected set that no tolerance box around the polygons reaches. So the
 /// lattice cells those boxes may reach are marked, the other cells fall into connected regions,
 /// and Perform's polygon tests run once per region (on the first point asked there), once for all
-/// points away from every polygon's bounding box, and for every point in a marked cell, there
-/// through PolygonClassifier (the same answers from the polygon edges near the point; Perform
-/// scans every edge five times, and builds a surface adaptor, on each call). Only a point within
-/// a polygon's tolerance, where Perform falls back to BRepClass_FaceClassifier, is left to
-/// Perform (Ask). On a periodic surface Perform retries a point outside at shifted copies; so
-/// does this, in the same order.
+/// points away from every polygon's bounding box; a point in a marked cell is left to Perform
+/// (Ask), or to exact(), the same tests through PolygonClassifier (the polygon edges near the
+/// point; Perform scans every edge five times, and builds a surface adaptor, on each call). On a
+/// periodic surface Perform retries a point outside at shifted copies; so does this, in the same
+/// order.
 ///
 /// Reads the classifier's polygons, which OpenCASCADE keeps private. Written from OCC 7.7.0's
 /// BRepTopAdaptor_FClass2d.cxx and CSLib_Class2d.cxx and checked against 7.6.3 (Debian 12) with
@@ -58,9 +57,10 @@ class LatticeClassifier {
   /// The same for any point.
   Answer classify(const gp_Pnt2d& uv);
 
-  /// Whether the points of cell (i, j) may get different answers (a polygon's tolerance box may
-  /// reach the cell); else they all get the same.
-  bool mixed(long i, long j) const { return !usable_ || region_[static_cast<size_t>(i * lat_.nv + j)] < 0; }
+  /// Perform's answer for any point, Ask only within a polygon's tolerance (where Perform asks
+  /// BRepClass_FaceClassifier): for the points classify leaves to Perform, which the sampler asks
+  /// only of the candidates it would keep.
+  Answer exact(const gp_Pnt2d& uv);
 
  private:
   // Perform(uv, Standard_False): the polygons' answer without the periodic retries.
@@ -69,7 +69,7 @@ class LatticeClassifier {
   State polygon_state(const gp_Pnt2d& uv);
   State remember(State& slot, const gp_Pnt2d& uv);
   State wires_state(const gp_Pnt2d& uv) const;
-  Answer with_retries(const gp_Pnt2d& uv, State first);
+  Answer with_retries(const gp_Pnt2d& uv, State first, bool exact = false);
   Answer checked(Answer a, const gp_Pnt2d& uv) const;
   void mark_polygons();
   void label_regions();

@@ -773,7 +773,9 @@ class Sampler {
 
   // Exactly classifier(fi).Perform(uv) == TopAbs_IN.
   bool inside_face(int fi, const gp_Pnt2d& uv) {
-    const LatticeClassifier::Answer a = lattice(fi).classify(uv);
+    LatticeClassifier& l = lattice(fi);
+    LatticeClassifier::Answer a = l.classify(uv);
+    if (a == LatticeClassifier::Answer::Ask) a = l.exact(uv);
     if (a != LatticeClassifier::Answer::Ask) return a == LatticeClassifier::Answer::In;
     return classifier(fi).Perform(uv) == TopAbs_IN;
   }
@@ -818,7 +820,11 @@ class Sampler {
       return distance2(out_.points[id], c) < ex * ex && !opposite(out_.normal[id], nc);
     });
     if (crowded) return;
-    if (where == LatticeClassifier::Answer::Ask && classifier(fi).Perform(gp_Pnt2d(u, v)) != TopAbs_IN) return;
+    if (where == LatticeClassifier::Answer::Ask) {
+      const LatticeClassifier::Answer a = lattice(fi).exact(gp_Pnt2d(u, v));
+      if (a == LatticeClassifier::Answer::Out) return;
+      if (a == LatticeClassifier::Answer::Ask && classifier(fi).Perform(gp_Pnt2d(u, v)) != TopAbs_IN) return;
+    }
     own.insert(c, static_cast<int>(in.point.size()));
     in.point.push_back(c);
     in.normal.push_back(nc);
@@ -847,9 +853,7 @@ class Sampler {
       for (long j = 0; j < nvv; ++j) {
         const double u = u0 + du * (i + 0.5 + jitter(rng)), v = v0 + dv * (j + 0.5 + jitter(rng));
         const LatticeClassifier::Answer where = inside.classify(i, j, gp_Pnt2d(u, v));
-        const bool out = where == LatticeClassifier::Answer::Out;
-        // A cell cut finer below may have points inside where this one is outside.
-        if (out && (!refine || !inside.mixed(i, j))) continue;
+        if (where == LatticeClassifier::Answer::Out) continue;
         if (!refine) {
           try_face_candidate(fi, u, v, where, sp_.face, props, in, own);
           continue;
@@ -857,7 +861,7 @@ class Sampler {
         const double h = field_.at(to_point(surf.Value(u, v)));
         const int m = std::min(8, static_cast<int>(std::ceil(plan.spacing / h - 1e-9)));
         if (m <= 1) {
-          if (!out) try_face_candidate(fi, u, v, where, h, props, in, own);
+          try_face_candidate(fi, u, v, where, h, props, in, own);
           continue;
         }
         for (int a = 0; a < m; ++a)
