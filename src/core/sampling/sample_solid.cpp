@@ -773,9 +773,15 @@ class Sampler {
 
   // Exactly classifier(fi).Perform(uv) == TopAbs_IN.
   bool inside_face(int fi, const gp_Pnt2d& uv) {
-    LatticeClassifier& l = lattice(fi);
-    LatticeClassifier::Answer a = l.classify(uv);
-    if (a == LatticeClassifier::Answer::Ask) a = l.exact(uv);
+    const LatticeClassifier::Answer a = lattice(fi).classify(uv);
+    if (a != LatticeClassifier::Answer::Ask) return a == LatticeClassifier::Answer::In;
+    return inside_near_boundary(fi, uv);
+  }
+
+  // The same for a point that the lattice leaves to Perform (Ask): the wires' polygons answer,
+  // and Perform itself within a polygon's tolerance.
+  bool inside_near_boundary(int fi, const gp_Pnt2d& uv) {
+    const LatticeClassifier::Answer a = lattice(fi).exact(uv);
     if (a != LatticeClassifier::Answer::Ask) return a == LatticeClassifier::Answer::In;
     return classifier(fi).Perform(uv) == TopAbs_IN;
   }
@@ -820,11 +826,7 @@ class Sampler {
       return distance2(out_.points[id], c) < ex * ex && !opposite(out_.normal[id], nc);
     });
     if (crowded) return;
-    if (where == LatticeClassifier::Answer::Ask) {
-      const LatticeClassifier::Answer a = lattice(fi).exact(gp_Pnt2d(u, v));
-      if (a == LatticeClassifier::Answer::Out) return;
-      if (a == LatticeClassifier::Answer::Ask && classifier(fi).Perform(gp_Pnt2d(u, v)) != TopAbs_IN) return;
-    }
+    if (where == LatticeClassifier::Answer::Ask && !inside_near_boundary(fi, gp_Pnt2d(u, v))) return;
     own.insert(c, static_cast<int>(in.point.size()));
     in.point.push_back(c);
     in.normal.push_back(nc);
