@@ -25,6 +25,7 @@
 #include "../sampling/sample_solid.h"
 #include "../sampling/spacing_field.h"
 #include "../sampling/thin_walls.h"
+#include "../two_cores.h"
 #include "exact_inside_test.h"
 
 namespace cadmedial {
@@ -142,6 +143,8 @@ constexpr double kSharpWedgeDot = -0.95;  // normals of a wedge of 18 degrees
 struct SolidSampling {
   Samples samples;
   SpacingField field{1.0};  ///< uniform, or finer at thin walls
+  /// The samples' face domains, until built (the pipeline builds them beside the triangulation).
+  FaceDomainBuilder domains;
   /// The thinnest wall, when the first pass's answer is final (nothing was refined).
   std::optional<ThinWall> thin;
   /// The thin-wall check of the uniform sampling is still to run (compute_medial_axis runs it
@@ -230,9 +233,11 @@ void resample_for(SolidSampling& s, const Features& features, const SolidMeasure
     // near the budget (bench/README.md). The one before (a quarter to nine tenths of the count)
     // had NIST CTC 02 at 66k samples sample 210,185 points in 1.9 s and throw them away.
     if (estimate_samples(measure, features, finer, s.samples) <= kSampleBudget * first) {
-      Samples more = sampler.sample(finer, progress);
+      FaceDomainBuilder domains;
+      Samples more = sampler.sample(finer, domains, progress);
       if (static_cast<double>(more.size()) <= kSampleBudget * first) {
         s.samples = std::move(more);
+        s.domains = std::move(domains);
         s.field = std::move(finer);
         return;
       }
@@ -241,7 +246,7 @@ void resample_for(SolidSampling& s, const Features& features, const SolidMeasure
   SpacingField field = thin_wall_field(s.samples, features, spacing, radii, kMaxRefinement);
   if (field.is_uniform()) return keep_uniform(s, field.uniform());
   s.walls_pending = false;
-  s.samples = sampler.sample(field, progress);
+  s.samples = sampler.sample(field, s.domains, progress);
   s.field = std::move(field);
 }
 
@@ -276,7 +281,10 @@ std::vector<SolidSampling> sample_solids(std::vector<std::unique_ptr<SolidSample
     double total = 0;
     for (size_t i = 0; i < samplers.size(); ++i) {
       naming_solid(i, samplers.size(), [&] {
-        out.push_back({samplers[i]->sample(SpacingField(spacing), progress), SpacingField(spacing), {}});
+        SolidSampling s;
+        s.samples = samplers[i]->sample(SpacingField(spacing), s.domains, progress);
+        s.field = SpacingField(spacing);
+        out.push_back(std::move(s));
       });
       total += static_cast<double>(out.back().samples.size());
     }
@@ -298,9 +306,12 @@ std::vector<SolidSampling> sample_solids(std::vector<std::unique_ptr<SolidSample
 }
 
 std::vector<std::unique_ptr<SolidSampler>> samplers_for(const std::vector<TopoDS_Solid>& solids,
-                                                        const std::vector<Features>& features) {
+                                                        const std::vector<Features>& features,
+                                                        std::vector<FaceSetup> faces = {}) {
   std::vector<std::unique_ptr<SolidSampler>> samplers;
-  for (size_t i = 0; i < solids.size(); ++i) samplers.push_back(std::make_unique<SolidSampler>(solids[i], features[i]));
+  for (size_t i = 0; i < solids.size(); ++i)
+    samplers.push_back(std::make_unique<SolidSampler>(solids[i], features[i],
+                                                      i < faces.size() ? std::move(faces[i]) : FaceSetup()));
   return samplers;
 }
 
@@ -357,7 +368,10 @@ std::vector<SolidSampling> sample_as_computed(const TopoDS_Shape& shape, const S
     std::vector<std::unique_ptr<SolidSampler>> samplers = samplers_for(solids, features);
     std::vector<SolidSampling> sampled = sample_solids(samplers, features, m, params, sp.spacing, false, {});
     sp.estimated_samples = 0;
-    for (const SolidSampling& s : sampled) sp.estimated_samples += s.samples.size();
+    for (SolidSampling& s : sampled) {
+      s.domains.build(s.samples);
+      sp.estimated_samples += s.samples.size();
+    }
     return sampled;
   } catch (const Standard_Failure& err) {
     throw GeometryError(std::string("cannot sample the shape: ") + err.GetMessageString());
@@ -401,19 +415,34 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
     std::vector<SolidSampling> sampled;
     std::vector<std::unique_ptr<SolidSampler>> samplers;
     try {
-      t0 = Clock::now();
-      report(progress, "features", 0.0);
-      for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
-      add_timing(stats.timings, "features", seconds_since(t0));
+      // The faces' surfaces and classifiers, which the sampling needs first, on the second core
+      // meanwhile (it is idle until the sampling), as many as are ready when the plan is: the
+      // sampler makes the others (NIST CTC 02's 663 faces take longer than its features).
+      std::vector<FaceSetup> faces(solids.size());
+      std::atomic<bool> planned{false};
+      internal::on_two_cores(
+          [&] {
+            const struct Planned {
+              std::atomic<bool>& flag;
+              ~Planned() { flag = true; }
+            } planned_on_exit{planned};
+            t0 = Clock::now();
+            report(progress, "features", 0.0);
+            for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
+            add_timing(stats.timings, "features", seconds_since(t0));
 
-      // The plan measures the solids with their features (a second classification cost as much).
-      t0 = Clock::now();
-      m = measure(solids, features);
-      spacing = plan(m, params.sampling).spacing;
-      add_timing(stats.timings, "setup", seconds_since(t0));
+            // The plan measures the solids with their features (a second classification cost as much).
+            t0 = Clock::now();
+            m = measure(solids, features);
+            spacing = plan(m, params.sampling).spacing;
+            add_timing(stats.timings, "setup", seconds_since(t0));
+          },
+          [&](const std::atomic<bool>&) {
+            for (std::size_t i = 0; i < solids.size() && !planned; ++i) faces[i] = FaceSetup::make(solids[i], &planned);
+          });
 
       t0 = Clock::now();
-      samplers = samplers_for(solids, features);
+      samplers = samplers_for(solids, features, std::move(faces));
       sampled = sample_solids(samplers, features, m, params.sampling, spacing, true, progress);
       stats.spacing = spacing;
       add_timing(stats.timings, "sampling", seconds_since(t0));
@@ -493,6 +522,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
               to_check.clear();  // done: a second try (after a finer sampling) skips them
               check_seconds += seconds_since(start);
               start = Clock::now();
+              s.domains.build(s.samples);
               Umbrellas u = reconstruct_faces(s.samples, worker);
               reconstruction_seconds = seconds_since(start);
               // One thread: the triangulation has the other core.

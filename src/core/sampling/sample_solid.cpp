@@ -31,6 +31,7 @@
 #include <Standard_ErrorHandler.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Vertex.hxx>
 
@@ -108,11 +109,24 @@ struct FixedSample {
 
 }  // namespace sampling_detail
 
+struct FaceDomainBuilder::Data {
+  const Features* features = nullptr;
+  std::vector<std::vector<ChainPoint>> chains;
+  std::unordered_map<int, std::vector<std::pair<int, std::array<double, 2>>>> face_points;
+  /// Per face: its mean metric and parameter bounds (the face plans' u_scale, v_scale, u0, u1, v0, v1).
+  std::vector<std::array<double, 6>> plans;
+};
+
+struct FaceSetup::Data {
+  std::vector<std::unique_ptr<BRepAdaptor_Surface>> surfaces;
+  std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers;
+};
+
 struct SolidSampler::State {
   TopoDS_Solid solid;
   Features features;
-  // Per face, made on first use; during the face interiors only the thread sampling a face
-  // touches its entries.
+  // Per face, made ahead (FaceSetup) or on first use; during the face interiors only the thread
+  // sampling a face touches its entries.
   std::vector<std::unique_ptr<BRepAdaptor_Surface>> surfaces;
   std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> classifiers;
   double plan_spacing = 0;  ///< the spacing `plans` are for
@@ -142,12 +156,22 @@ class Sampler {
     lattices_.resize(nf);
   }
 
-  Samples run() {
+  /// The samples; their face domains are left to `later`.
+  Samples run(FaceDomainBuilder::Data& later) {
     sample_corners();
     sample_edges();
     report(progress_, "sampling", 0.1);
     sample_triplets();
     sample_faces();
+    const int nf = f_.faces.Extent();
+    later.features = &f_;
+    later.plans.resize(nf);
+    for (int fi = 0; fi < nf; ++fi) {
+      const FacePlan& plan = face_plan(fi);
+      later.plans[fi] = {plan.u_scale, plan.v_scale, plan.u0, plan.u1, plan.v0, plan.v1};
+    }
+    later.chains = std::move(chains_);
+    later.face_points = std::move(face_points_);
     return std::move(out_);
   }
 
@@ -674,7 +698,6 @@ class Sampler {
         out_.curvature[id] = in.curvature[k];
         points.push_back({static_cast<int>(id), in.uv[k]});
       }
-      build_domain(fi);
     }
     if (field_.is_uniform()) {
       state_.last_spacing = field_.uniform();
@@ -879,60 +902,6 @@ class Sampler {
     return in;
   }
 
-  // The face's points in its parameter plane: boundary chains (seams twice, degenerate edges as
-  // copies of their vertex) with their segments, then the interior and triplet samples.
-  void build_domain(int fi) {
-    const TopoDS_Face& face = TopoDS::Face(f_.faces(fi + 1));
-    const TopoDS_Face fwd = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
-    FaceDomain& dom = out_.faces[fi];
-    const FacePlan& plan = face_plan(fi);
-    dom.u_scale = plan.u_scale;
-    dom.v_scale = plan.v_scale;
-    const double u0 = plan.u0, u1 = plan.u1, v0 = plan.v0, v1 = plan.v1;
-    const double tol = 1e-6 * std::max({u1 - u0, v1 - v0, 1e-12});
-    // Chains of adjacent edges meet at a corner: one local point per (sample, uv). A sample has
-    // several only on seams and degenerate edges, where its uv differ by much more than tol.
-    std::unordered_map<int, std::vector<int>> copies;
-    auto local = [&](int sample, double u, double v) {
-      auto& list = copies[sample];
-      for (int k : list)
-        if (std::abs(dom.uv[k][0] - u) < tol && std::abs(dom.uv[k][1] - v) < tol) return k;
-      dom.sample.push_back(sample);
-      dom.uv.push_back({u, v});
-      list.push_back(static_cast<int>(dom.sample.size() - 1));
-      return list.back();
-    };
-    for (TopExp_Explorer ex(fwd, TopAbs_EDGE); ex.More(); ex.Next()) {
-      const TopoDS_Edge& edge = TopoDS::Edge(ex.Current());
-      const int e = f_.edges.FindIndex(edge) - 1;
-      double a = 0, b = 0;
-      Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, fwd, a, b);
-      if (pc.IsNull()) continue;
-      const auto& chain = chains_[e];
-      std::vector<int> ids;
-      if (BRep_Tool::Degenerated(edge)) {
-        // A pole or apex: one 3D point, a segment in the parameter plane.
-        if (chain.empty()) continue;
-        constexpr int kCopies = 16;
-        for (int i = 0; i <= kCopies; ++i) {
-          const gp_Pnt2d uv = pc->Value(a + (b - a) * i / kCopies);
-          ids.push_back(local(chain.front().sample, uv.X(), uv.Y()));
-        }
-      } else {
-        for (const ChainPoint& cp : chain) {
-          const gp_Pnt2d uv = pc->Value(cp.t);
-          ids.push_back(local(cp.sample, uv.X(), uv.Y()));
-        }
-      }
-      for (size_t i = 0; i + 1 < ids.size(); ++i)
-        if (ids[i] != ids[i + 1]) dom.boundary.push_back({ids[i], ids[i + 1]});
-    }
-    for (const auto& [sample, uv] : face_points_[fi]) {
-      dom.sample.push_back(sample);
-      dom.uv.push_back(uv);
-    }
-  }
-
   SolidSampler::State& state_;
   const Features& f_;
   SampleSpacing sp_;
@@ -955,11 +924,114 @@ class Sampler {
   std::vector<std::unique_ptr<LatticeClassifier>> lattices_;
 };
 
+// Face fi's points in its parameter plane: boundary chains (seams twice, degenerate edges as
+// copies of their vertex) with their segments, then the interior and triplet samples.
+void build_domain(const FaceDomainBuilder::Data& d, int fi, FaceDomain& dom) {
+  const Features& f = *d.features;
+  const TopoDS_Face& face = TopoDS::Face(f.faces(fi + 1));
+  const TopoDS_Face fwd = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+  const auto& [u_scale, v_scale, u0, u1, v0, v1] = d.plans[fi];
+  dom.u_scale = u_scale;
+  dom.v_scale = v_scale;
+  const double tol = 1e-6 * std::max({u1 - u0, v1 - v0, 1e-12});
+  // Chains of adjacent edges meet at a corner: one local point per (sample, uv). A sample has
+  // several only on seams and degenerate edges, where its uv differ by much more than tol.
+  std::unordered_map<int, std::vector<int>> copies;
+  auto local = [&](int sample, double u, double v) {
+    auto& list = copies[sample];
+    for (int k : list)
+      if (std::abs(dom.uv[k][0] - u) < tol && std::abs(dom.uv[k][1] - v) < tol) return k;
+    dom.sample.push_back(sample);
+    dom.uv.push_back({u, v});
+    list.push_back(static_cast<int>(dom.sample.size() - 1));
+    return list.back();
+  };
+  for (TopExp_Explorer ex(fwd, TopAbs_EDGE); ex.More(); ex.Next()) {
+    const TopoDS_Edge& edge = TopoDS::Edge(ex.Current());
+    const int e = f.edges.FindIndex(edge) - 1;
+    double a = 0, b = 0;
+    Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, fwd, a, b);
+    if (pc.IsNull()) continue;
+    const auto& chain = d.chains[e];
+    std::vector<int> ids;
+    if (BRep_Tool::Degenerated(edge)) {
+      // A pole or apex: one 3D point, a segment in the parameter plane.
+      if (chain.empty()) continue;
+      constexpr int kCopies = 16;
+      for (int i = 0; i <= kCopies; ++i) {
+        const gp_Pnt2d uv = pc->Value(a + (b - a) * i / kCopies);
+        ids.push_back(local(chain.front().sample, uv.X(), uv.Y()));
+      }
+    } else {
+      for (const ChainPoint& cp : chain) {
+        const gp_Pnt2d uv = pc->Value(cp.t);
+        ids.push_back(local(cp.sample, uv.X(), uv.Y()));
+      }
+    }
+    for (size_t i = 0; i + 1 < ids.size(); ++i)
+      if (ids[i] != ids[i + 1]) dom.boundary.push_back({ids[i], ids[i + 1]});
+  }
+  const auto points = d.face_points.find(fi);
+  if (points == d.face_points.end()) return;
+  for (const auto& [sample, uv] : points->second) {
+    dom.sample.push_back(sample);
+    dom.uv.push_back(uv);
+  }
+}
+
 }  // namespace
 
-SolidSampler::SolidSampler(const TopoDS_Solid& solid, const Features& features) : state_(std::make_unique<State>()) {
+FaceDomainBuilder::FaceDomainBuilder() = default;
+FaceDomainBuilder::~FaceDomainBuilder() = default;
+FaceDomainBuilder::FaceDomainBuilder(FaceDomainBuilder&&) noexcept = default;
+FaceDomainBuilder& FaceDomainBuilder::operator=(FaceDomainBuilder&&) noexcept = default;
+
+void FaceDomainBuilder::build(Samples& s) {
+  if (!data_) return;
+  const std::unique_ptr<Data> d = std::move(data_);
+  try {
+    for (std::size_t fi = 0; fi < s.faces.size() && fi < d->plans.size(); ++fi)
+      build_domain(*d, static_cast<int>(fi), s.faces[fi]);
+  } catch (const Standard_Failure& err) {
+    throw GeometryError(std::string("sampling failed: ") + err.GetMessageString());
+  }
+}
+
+FaceSetup::FaceSetup() = default;
+FaceSetup::~FaceSetup() = default;
+FaceSetup::FaceSetup(FaceSetup&&) noexcept = default;
+FaceSetup& FaceSetup::operator=(FaceSetup&&) noexcept = default;
+
+FaceSetup FaceSetup::make(const TopoDS_Solid& solid, const std::atomic<bool>* stop) {
+  FaceSetup out;
+  out.data_ = std::make_unique<Data>();
+  TopTools_IndexedMapOfShape faces;
+  TopExp::MapShapes(solid, TopAbs_FACE, faces);
+  const int nf = faces.Extent();
+  out.data_->surfaces.resize(nf);
+  out.data_->classifiers.resize(nf);
+  for (int fi = 0; fi < nf && !(stop && *stop); ++fi) {
+    // As Sampler::surface and Sampler::classifier make them.
+    const TopoDS_Face& face = TopoDS::Face(faces(fi + 1));
+    try {
+      out.data_->surfaces[fi] = std::make_unique<BRepAdaptor_Surface>(face, Standard_False);
+      out.data_->classifiers[fi] = std::make_unique<BRepTopAdaptor_FClass2d>(face, 1e-9);
+    } catch (...) {
+      out.data_->surfaces[fi].reset();
+      out.data_->classifiers[fi].reset();
+    }
+  }
+  return out;
+}
+
+SolidSampler::SolidSampler(const TopoDS_Solid& solid, const Features& features, FaceSetup faces)
+    : state_(std::make_unique<State>()) {
   state_->solid = solid;
   state_->features = features;
+  if (faces.data_ && static_cast<int>(faces.data_->classifiers.size()) == features.faces.Extent()) {
+    state_->surfaces = std::move(faces.data_->surfaces);
+    state_->classifiers = std::move(faces.data_->classifiers);
+  }
 }
 
 SolidSampler::~SolidSampler() = default;
@@ -967,9 +1039,19 @@ SolidSampler::~SolidSampler() = default;
 int SolidSampler::kept_faces() const { return state_->kept_faces; }
 
 Samples SolidSampler::sample(const SpacingField& field, const Progress& progress) {
+  FaceDomainBuilder domains;
+  Samples s = sample(field, domains, progress);
+  domains.build(s);
+  return s;
+}
+
+Samples SolidSampler::sample(const SpacingField& field, FaceDomainBuilder& domains, const Progress& progress) {
   if (!(field.uniform() > 0) || !std::isfinite(field.uniform())) throw InvalidInput("spacing must be a positive number");
+  auto data = std::make_unique<FaceDomainBuilder::Data>();
   try {
-    return Sampler(*state_, field, progress).run();
+    Samples s = Sampler(*state_, field, progress).run(*data);
+    domains.data_ = std::move(data);
+    return s;
   } catch (const Standard_Failure& err) {
     throw GeometryError(std::string("sampling failed: ") + err.GetMessageString());
   }
