@@ -7,6 +7,7 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepTools.hxx>
 #include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
@@ -19,6 +20,8 @@
 #include <TopoDS_Vertex.hxx>
 #include <gp_Lin.hxx>
 #include <gp_Pnt2d.hxx>
+
+#include "../sampling/lattice_classifier.h"
 
 namespace cadmedial::internal {
 
@@ -104,6 +107,7 @@ RayClassifier::RayClassifier(const TopoDS_Solid& solid, double tol) : tol_(tol) 
     for (int k = 0; k < 3; ++k) b[k] -= margin_, b[k + 3] += margin_;
   intersectors_.resize(faces_.size());
   boundaries_.resize(faces_.size());
+  boundary_answers_.resize(faces_.size());
 }
 
 RayClassifier::~RayClassifier() = default;
@@ -138,8 +142,17 @@ bool RayClassifier::near_boundary(int face, double u, double v) {
     const BRepAdaptor_Surface surface(faces_[face], false);
     const double uv = std::max(surface.UResolution(margin_), surface.VResolution(margin_));
     boundaries_[face] = std::make_unique<BRepTopAdaptor_FClass2d>(faces_[face], uv);
+    // One lattice cell over the classifier's bounds: exact() needs no finer one.
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(faces_[face], u0, u1, v0, v1);
+    boundary_answers_[face] =
+        std::make_unique<LatticeClassifier>(*boundaries_[face], surface, UvLattice{u0, v0, u1 - u0, v1 - v0, 1, 1});
   }
-  return boundaries_[face]->Perform(gp_Pnt2d(u, v)) != TopAbs_IN;
+  // Perform's answer: from the polygons near (u, v), or from Perform within their tolerance.
+  const gp_Pnt2d uv(u, v);
+  const LatticeClassifier::Answer a = boundary_answers_[face]->exact(uv);
+  if (a != LatticeClassifier::Answer::Ask) return a != LatticeClassifier::Answer::In;
+  return boundaries_[face]->Perform(uv) != TopAbs_IN;
 }
 
 RayClassifier::Answer RayClassifier::cast(const std::array<double, 3>& p, const std::array<double, 3>& d) {

@@ -14,6 +14,10 @@
 class BRepTopAdaptor_FClass2d;
 class IntCurvesFace_Intersector;
 
+namespace cadmedial {
+class LatticeClassifier;
+}
+
 namespace cadmedial::internal {
 
 /// Casts rays from the point and reads the first face crossing on each: a ray that leaves the
@@ -55,6 +59,8 @@ class RayClassifier {
   std::vector<std::array<double, 6>> edge_boxes_;  ///< with the edge's tolerance
   std::vector<std::unique_ptr<IntCurvesFace_Intersector>> intersectors_;  ///< made on first use
   std::vector<std::unique_ptr<BRepTopAdaptor_FClass2d>> boundaries_;      ///< made on first use
+  /// Their answers without Perform's scans of every polygon edge (with them)
+  std::vector<std::unique_ptr<LatticeClassifier>> boundary_answers_;
   double tol_;
   double margin_;  ///< crossings closer than this along a ray are one
   double reach_;   ///< longer than any ray needs
