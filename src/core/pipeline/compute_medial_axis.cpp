@@ -368,9 +368,9 @@ std::vector<SolidSampling> sample_as_computed(const TopoDS_Shape& shape, const S
     std::vector<std::unique_ptr<SolidSampler>> samplers = samplers_for(solids, features);
     std::vector<SolidSampling> sampled = sample_solids(samplers, features, m, params, sp.spacing, false, {});
     sp.estimated_samples = 0;
-    for (SolidSampling& s : sampled) {
-      s.domains.build(s.samples);
-      sp.estimated_samples += s.samples.size();
+    for (std::size_t i = 0; i < sampled.size(); ++i) {
+      naming_solid(i, sampled.size(), [&] { sampled[i].domains.build(sampled[i].samples); });
+      sp.estimated_samples += sampled[i].samples.size();
     }
     return sampled;
   } catch (const Standard_Failure& err) {
@@ -493,7 +493,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       for (;;) {
         std::atomic<bool> abandoned{false}, resample{false};
         const Progress worker = [&abandoned](const std::string&, double) { return !abandoned.load(); };
-        // The selection starts once the triangulation is done, and then waits for this worker: the
+        // The selection starts once the triangulation is done, and then waits for the umbrellas: the
         // classifiers are left to the first points asked (on two cores) rather than make it wait.
         std::atomic<bool> triangulated{false};
         const Progress stages = [&sub, &triangulated](const std::string& stage, double f) {
@@ -505,11 +505,20 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         // than its triangulation at 20k samples), then the thinnest wall for the warning.
         std::promise<Umbrellas> reconstructed;
         std::shared_future<Umbrellas> umbrellas = reconstructed.get_future().share();
+        // The exact inside tests ask the B-rep: on a solid its check refuses, the refusal says
+        // better what is wrong than a failure there. They wait for the check.
+        std::promise<void> checked;
+        const std::shared_future<void> checked_first = checked.get_future().share();
+        const InsideTest checked_inside = [&inside, checked_first](const std::vector<Point3>& pts) {
+          checked_first.get();
+          return inside(pts);
+        };
         std::atomic<bool> cancelled{false};
         std::future<void> worker_done =
             std::async(std::launch::async, [&s = sampling, &f = features[i], &check_seconds, &reconstruction_seconds,
                                             &walls_seconds, &thin, &worker, spacing, &to_check, &prepare_inside,
-                                            &abandoned, &cancelled, &triangulated, &resample, &reconstructed] {
+                                            &abandoned, &cancelled, &triangulated, &resample, &reconstructed,
+                                            &checked, i, n] {
               try {
                 auto start = Clock::now();
                 if (s.walls_pending) {
@@ -521,12 +530,13 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
                   if (thin_walls) {
                     resample = true;
                     reconstructed.set_value(Umbrellas());
+                    checked.set_value();
                     return;  // the check waits for the finer sampling's try
                   }
                   keep_uniform(s, spacing);
                 }
                 start = Clock::now();
-                s.domains.build(s.samples);
+                naming_solid(static_cast<std::size_t>(i), static_cast<std::size_t>(n), [&] { s.domains.build(s.samples); });
                 Umbrellas u = reconstruct_faces(s.samples, worker);
                 reconstruction_seconds = seconds_since(start);
                 reconstructed.set_value(std::move(u));
@@ -535,11 +545,30 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
                 reconstructed.set_exception(std::current_exception());
               }
               if (!abandoned && !triangulated) prepare_inside();
-              if (cancelled) return;
-              const auto start = Clock::now();
-              run_deferred_checks(to_check);
-              to_check.clear();  // done: a second try (after a finer sampling) skips them
-              check_seconds += seconds_since(start);
+              {
+                // `checked` is set on every way out (the exact inside tests wait for it).
+                struct Gate {
+                  std::promise<void>& promise;
+                  bool set = false;
+                  ~Gate() {
+                    if (!set) promise.set_value();
+                  }
+                } gate{checked};
+                const auto start = Clock::now();
+                try {
+                  // One solid at a time: a cancel waits for one BRepCheck at most.
+                  for (const DeferredCheck& check : to_check) {
+                    if (cancelled) return;
+                    run_deferred_checks({check});
+                  }
+                } catch (...) {
+                  gate.set = true;
+                  checked.set_exception(std::current_exception());
+                  throw;
+                }
+                to_check.clear();  // done: a second try (after a finer sampling) skips them
+                check_seconds += seconds_since(start);
+              }
               if (abandoned) return;
               // One thread: the triangulation, or the stages after it, have the other core.
               thin = s.thin ? *s.thin
@@ -552,7 +581,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
 
         const auto t_try = Clock::now();
         try {
-          mesh = medial_axis(samples, umbrellas, params.medial, inside, i, &ms, stages, &resample);
+          mesh = medial_axis(samples, umbrellas, params.medial, checked_inside, i, &ms, stages, &resample);
         } catch (const Cancelled&) {
           if (!resample) {
             cancelled = true;

@@ -1,6 +1,7 @@
 #include "exact_inside_test.h"
 
 #include <memory>
+#include <mutex>
 
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <Standard_Failure.hxx>
@@ -23,7 +24,11 @@ struct Classifiers {
   std::unique_ptr<internal::RayClassifier> rays[2];
   std::unique_ptr<BRepClass3d_SolidClassifier> on_core[2];
 
+  // The pipeline's worker may still be making them (prepare) when the first points are asked.
+  std::mutex making[2];
+
   internal::RayClassifier& rays_on(int core) {
+    const std::lock_guard<std::mutex> lock(making[core]);
     if (!rays[core]) rays[core] = std::make_unique<internal::RayClassifier>(solid, tol);
     return *rays[core];
   }

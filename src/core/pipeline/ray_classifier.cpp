@@ -138,15 +138,17 @@ bool RayClassifier::on_edge(const std::array<double, 3>& p) const {
 }
 
 bool RayClassifier::near_boundary(int face, double u, double v) {
-  if (!boundaries_[face]) {
+  if (!boundaries_[face] || !boundary_answers_[face]) {
+    // Both or neither: OpenCASCADE may fail on the face between the two (the call is then refused).
     const BRepAdaptor_Surface surface(faces_[face], false);
     const double uv = std::max(surface.UResolution(margin_), surface.VResolution(margin_));
-    boundaries_[face] = std::make_unique<BRepTopAdaptor_FClass2d>(faces_[face], uv);
-    // One lattice cell over the classifier's bounds: exact() needs no finer one.
+    auto boundary = std::make_unique<BRepTopAdaptor_FClass2d>(faces_[face], uv);
+    // One lattice cell over the face's bounds: exact() needs no finer one.
     double u0, u1, v0, v1;
     BRepTools::UVBounds(faces_[face], u0, u1, v0, v1);
-    boundary_answers_[face] =
-        std::make_unique<LatticeClassifier>(*boundaries_[face], surface, UvLattice{u0, v0, u1 - u0, v1 - v0, 1, 1});
+    auto answers = std::make_unique<LatticeClassifier>(*boundary, surface, UvLattice{u0, v0, u1 - u0, v1 - v0, 1, 1});
+    boundaries_[face] = std::move(boundary);
+    boundary_answers_[face] = std::move(answers);
   }
   // Perform's answer: from the polygons near (u, v), or from Perform within their tolerance.
   const gp_Pnt2d uv(u, v);

@@ -49,10 +49,6 @@ Samples sample_solid(const TopoDS_Solid& solid, const Features& features, double
 Samples sample_solid(const TopoDS_Solid& solid, const Features& features, const SpacingField& field,
                      const Progress& progress = {});
 
-/// Samples one solid pass after pass (calibrating the spacing, refining thin walls) without redoing
-/// what a pass leaves unchanged: each face's surface, classifier and candidate lattice and, when a
-/// pass repeats the last uniform pass's spacing, the interior samples of every face that is not
-/// refined and near which no earlier sample changed. The samples are those sample_solid places.
 class FaceDomainBuilder;
 
 /// A solid's per-face set-up that no spacing changes (each face's surface adaptor and boundary
@@ -77,6 +73,10 @@ class FaceSetup {
   std::unique_ptr<Data> data_;
 };
 
+/// Samples one solid pass after pass (calibrating the spacing, refining thin walls) without redoing
+/// what a pass leaves unchanged: each face's surface, classifier and candidate lattice and, when a
+/// pass repeats the last uniform pass's spacing, the interior samples of every face that is not
+/// refined and near which no earlier sample changed. The samples are those sample_solid places.
 class SolidSampler {
  public:
   /// Keeps copies of the solid's handle and of `features`, and takes over `faces` (made for this
