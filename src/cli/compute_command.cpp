@@ -20,7 +20,7 @@ int run_compute(const Args& args) {
   check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
 
-  const LoadedSolids loaded = load_solids(args.input);
+  const LoadedSolids loaded = load_solids(args.input, false);
   ProgressPrinter printer(args.quiet);
   ComputeResult result;
   try {

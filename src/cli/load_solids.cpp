@@ -9,11 +9,12 @@
 
 namespace cadmedial::cli {
 
-LoadedSolids load_solids(const std::string& path) {
+LoadedSolids load_solids(const std::string& path, bool brep_check) {
   LoadedSolids loaded;
   const TopoDS_Shape shape = read_shape_file(path);  // its messages already name the file
   try {
-    loaded.solids = extract_solids(shape, &loaded.skipped);
+    std::vector<DeferredCheck> engine_checks;  // the engine checks the solids it is given
+    loaded.solids = brep_check ? extract_solids(shape, &loaded.skipped) : extract_solids(shape, &loaded.skipped, engine_checks);
   } catch (const InvalidInput& e) {
     throw InvalidInput(path + ": " + e.what());
   }
