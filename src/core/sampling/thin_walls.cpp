@@ -57,23 +57,28 @@ class WallMeter {
   /// The samples measured, in order: face samples, and edge samples where the solid is not convex.
   const std::vector<int>& walls() const { return walls_; }
 
-  /// The radius at walls()[w], or infinity when no ball smaller than `below` was found.
-  double radius(std::size_t w) const {
+  /// The radius at walls()[w], or infinity when no ball smaller than `below` was found. Balls
+  /// above `cap` may be missed (infinity or a larger radius then): a ball through q is at least
+  /// half q's depth behind p's tangent plane, so only the slab up to 2 cap deep is searched.
+  double radius(std::size_t w, double cap = std::numeric_limits<double>::infinity()) const {
     const Samples& s = s_;
     const std::size_t i = static_cast<std::size_t>(walls_[w]);
     const Point3& p = s.points[i];
     const double spacing2 = spacing_ * spacing_, reach2 = reach_ * reach_;
     const bool by_edge = convex_.any_near(p, spacing_, [&](int j) { return distance2(s.points[j], p) < spacing2; });
     double radius = std::numeric_limits<double>::infinity();
+    const double slab = std::min(reach_, 2.0 * cap);
     for (const Point3* n : {&s.normal[i], on_edge(s, i) ? &s.normal2[i] : nullptr}) {
       if (!n) continue;
       Point3 lo, hi;
       for (int a = 0; a < 3; ++a) {
-        // The extent along axis a of {x : |x| <= reach, x.n <= 0}: the full reach on the side
-        // where the axis points into the solid, the disc's reach sqrt(1 - n_a^2) on the other.
-        const double slant = reach_ * std::min(1.0, std::sqrt(std::max(0.0, 1.0 - (*n)[a] * (*n)[a])) + 1e-9);
-        lo[a] = p[a] - ((*n)[a] < 0 ? slant : reach_);
-        hi[a] = p[a] + ((*n)[a] > 0 ? slant : reach_);
+        // The extent along axis a of {x : |x| <= reach, -slab <= x.n <= 0}: x = t n + u with u
+        // normal to n, so x_a lies within t n_a +- reach sqrt(1 - n_a^2), and within the reach.
+        // (The whole slab, the reach deep: the full reach where the axis points into the solid,
+        // the disc's reach sqrt(1 - n_a^2) on the other side.)
+        const double na = (*n)[a], disc = reach_ * std::sqrt(std::max(0.0, 1.0 - na * na)), margin = 1e-9 * reach_;
+        lo[a] = p[a] - std::min(reach_, std::max(0.0, slab * na) + disc) - margin;
+        hi[a] = p[a] + std::min(reach_, std::max(0.0, -slab * na) + disc) + margin;
       }
       grid_.any_in_box(lo, hi, [&](int j) {
         if (!facing(*n, j)) return false;
@@ -83,7 +88,7 @@ class WallMeter {
         const Point3 d{s.points[j][0] - p[0], s.points[j][1] - p[1], s.points[j][2] - p[2]};
         const double d2 = dot3(d, d);
         const double depth = -dot3(d, *n);  // how far q lies inside p's tangent plane
-        if (!(depth > 0 && d2 < reach2)) return false;
+        if (!(depth > 0 && d2 < reach2) || depth > slab) return false;
         radius = std::min(radius, d2 / (2.0 * depth));
         // Parallel walls: half their distance, with q up to 5 depths along the other wall (the
         // ball through q overestimates by (lateral offset)^2 / (2 depth) when q is not opposite
@@ -180,11 +185,12 @@ ThinWall thinnest_wall_near(const Samples& s, double spacing, const std::vector<
     const WallMeter meter(s, spacing, wedges, 1.0, below);
     const std::vector<int>& walls = meter.walls();
     ThinWall w;
+    // Only a ball below the thinnest so far can change the answer (the first of equals stays):
+    // the search narrows as it goes. On the Y-rod mount's refined samples at spacing 2.849 it
+    // took 0.052 to 0.070 s against 0.098 to 0.114 s (a scratch program, runs in turn).
     for (std::size_t k = 0; k < walls.size(); ++k) {
       if (k % 4096 == 0) report(progress, "thin walls", static_cast<double>(k) / walls.size());
-      const double r = meter.radius(k);
-      if (!(r < std::numeric_limits<double>::infinity())) continue;
-      ++w.samples;
+      const double r = meter.radius(k, w.radius);
       if (r < w.radius) w.radius = r, w.at = s.points[static_cast<std::size_t>(walls[k])];
     }
     if (below >= spacing || w.radius * kParallelReach <= below) return w;

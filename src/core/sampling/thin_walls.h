@@ -35,15 +35,15 @@ bool any_thin_wall(const Samples& samples, double spacing, const std::vector<std
 struct ThinWall {
   double radius = std::numeric_limits<double>::infinity();  ///< the smallest of wall_radii
   Point3 at{0, 0, 0};         ///< the face sample where it was found
-  std::size_t samples = 0;    ///< face samples with a finite radius
+  std::size_t samples = 0;    ///< face samples with a finite radius (thinnest_wall)
 };
 
 ThinWall thinnest_wall(const Samples& samples, const std::vector<double>& radii);
 /// thinnest_wall's wall (on one thread), found faster on a sampling refined at thin walls, where
 /// the spacing's reach takes in thousands of samples around each one (NIST FTC 10 at 66k: 5.2 s).
 /// It looks first only for walls up to 1.5 `guess` (the uniform pass's thinnest, whose walls the
-/// refined sampling shows about as thin), then as far as what it finds needs. `samples` counts the
-/// samples with a wall below the last search's limit.
+/// refined sampling shows about as thin), then as far as what it finds needs, and past each sample
+/// only for walls thinner than the thinnest so far: `samples` is not counted (0).
 ThinWall thinnest_wall_near(const Samples& samples, double spacing, const std::vector<std::array<int, 2>>& wedges,
                             double guess, const Progress& progress = {});
 inline ThinWall thinnest_wall(const Samples& samples, double spacing, const std::vector<std::array<int, 2>>& wedges,
