@@ -7,6 +7,7 @@
 #include <CGAL/Mpzf.h>
 
 #include "geometry_3.h"
+#include "prefetch.h"
 
 #include "../two_cores.h"
 
@@ -19,6 +20,12 @@ namespace {
 // default CellData, so its id need not be asked by comparing its vertices with the infinite one.
 void fill_cells(const std::vector<Cell>& cells, MedialComplex& mc, std::size_t begin, std::size_t end) {
   for (std::size_t id = begin; id < end; ++id) {
+    // A cell ahead, then its vertices and neighbours once the cell is in.
+    if (id + 2 * kPrefetchAhead < end) prefetch(*cells[id + 2 * kPrefetchAhead]);
+    if (id + kPrefetchAhead < end) {
+      const Cell& next = cells[id + kPrefetchAhead];
+      for (int j = 0; j < 4; ++j) prefetch(*next->vertex(j)), prefetch(*next->neighbor(j));
+    }
     const Cell& c = cells[id];
     for (int j = 0; j < 4; ++j) {
       mc.cell_samples[id][j] = c->vertex(j)->info();
@@ -82,6 +89,8 @@ void cell_centers(const std::vector<Point3>& points, MedialComplex& mc, std::siz
   // read from 1.6 MB of points rather than half a million scattered cells.
   auto point = [&points](int s) { return K::Point_3(points[s][0], points[s][1], points[s][2]); };
   for (std::size_t id = begin; id < end; ++id) {
+    if (id + kPrefetchAhead < end)
+      for (const int s : mc.cell_samples[id + kPrefetchAhead]) prefetch(points[s]);
     const std::array<int, 4>& v = mc.cell_samples[id];
     // Coplanar to rounding (the volume the samples span against the cube of the longest edge):
     // the circumcentre below is noise along the axis of their circle (settle_flat_cells).

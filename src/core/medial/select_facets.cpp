@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "geometry_3.h"
+#include "prefetch.h"
 #include "../two_cores.h"
 
 namespace cadmedial::internal {
@@ -205,6 +206,11 @@ Facets facets_of(const Selection& sel, const MedialComplex& mc, std::vector<std:
   std::vector<int> face;
   for (int c = 0; c < nc; ++c) {
     if (!tick(c)) break;
+    // The walks from a cell start into its neighbours (of this thread's cells).
+    const std::size_t ahead = static_cast<std::size_t>(c) + kPrefetchAhead;
+    if (ahead < static_cast<std::size_t>(nc) && !(done[ahead] & kOthers))
+      for (const int nb : mc.cell_neighbors[ahead])
+        if (nb >= 0) prefetch(mc.cell_samples[nb]), prefetch(mc.cell_neighbors[nb]);
     if ((done[c] & kOthers) || mc.far_outside[c]) continue;
     for (const auto& [i, j] : kEdge) {
       if (done[c] & edge_bit(i, j)) continue;
