@@ -11,18 +11,20 @@
 namespace cadmedial {
 
 /// Cells are keyed by their integer coordinates packed 21 bits each (cells 2^21 apart share a
-/// key, and then a bucket). An open-addressing table (linear probing) maps a key to the cell's
-/// list of ids, kept in insertion order in one flat array. The slot of a key is a hash of its x
-/// and y plus its z, so the three cells of a column that any_near visits in a row are usually
-/// neighbours in memory. The table is kept at most a quarter full: at half full, the runs of
-/// slots of neighbouring columns merge and a lookup probed about 4 extra slots (measured on the
-/// Y-rod mount at 250k samples; under 1 at a quarter, and sampling was about 10 % faster).
+/// key, and then a bucket). Cells come in blocks of 4 x 4 x 4: an open-addressing table (linear
+/// probing) maps a block's key to its 64 cells' list heads, side by side in one array, and a
+/// cell's list of ids is kept in insertion order in one flat array. A query's 8 to 27 cells
+/// mostly fall in one or two blocks, a few cache lines, where with a slot per cell each was a
+/// line of its own: sampling the Y-rod mount at 250k samples spent a third of its candidate tests
+/// on those loads (bench/README.md). The slot of a block is a hash of its x and y plus its z, and
+/// the table is kept at most a quarter full.
 class PointGrid {
  public:
   explicit PointGrid(double cell) : cell_(cell) { slots_.assign(kInitialSlots, Slot{}); }
 
   void insert(const Point3& p, int id) {
-    const int64_t k = key(cell_of(p[0]), cell_of(p[1]), cell_of(p[2]));
+    const int64_t x = cell_of(p[0]), y = cell_of(p[1]), z = cell_of(p[2]);
+    const int64_t k = block_key(x, y, z);
     Slot* s = find_slot(k);
     if (s->key == kEmpty) {
       if (4 * (used_ + 1) > slots_.size()) {
@@ -30,15 +32,19 @@ class PointGrid {
         s = find_slot(k);
       }
       s->key = k;
+      s->block = static_cast<int>(heads_.size() / kBlockCells);
+      heads_.resize(heads_.size() + kBlockCells, -1);
+      tails_.resize(tails_.size() + kBlockCells, -1);
       ++used_;
     }
+    const size_t c = static_cast<size_t>(s->block) * kBlockCells + in_block(x, y, z);
     const int entry = static_cast<int>(entries_.size());
     entries_.push_back({id, -1});
-    if (s->head < 0)
-      s->head = entry;
+    if (heads_[c] < 0)
+      heads_[c] = entry;
     else
-      entries_[static_cast<size_t>(s->tail)].next = entry;
-    s->tail = entry;
+      entries_[static_cast<size_t>(tails_[c])].next = entry;
+    tails_[c] = entry;
   }
 
   /// Calls visit(id) for every inserted point in the cells that meet the cube of half-side
@@ -58,12 +64,12 @@ class PointGrid {
     const int64_t x0 = first(p[0], cx), y0 = first(p[1], cy), z0 = first(p[2], cz);
     const int64_t x1 = last(p[0], cx), y1 = last(p[1], cy), z1 = last(p[2], cz);
     // The point's own cell first: while sampling, most candidates are turned down there.
-    if (visit_cell(key(cx, cy, cz), visit)) return true;
+    if (visit_cell(cx, cy, cz, visit)) return true;
     for (int64_t x = x0; x <= x1; ++x)
       for (int64_t y = y0; y <= y1; ++y)
         for (int64_t z = z0; z <= z1; ++z) {
           if (x == cx && y == cy && z == cz) continue;
-          if (visit_cell(key(x, y, z), visit)) return true;
+          if (visit_cell(x, y, z, visit)) return true;
         }
     return false;
   }
@@ -78,30 +84,33 @@ class PointGrid {
     for (int64_t x = x0; x <= x1; ++x)
       for (int64_t y = y0; y <= y1; ++y)
         for (int64_t z = z0; z <= z1; ++z)
-          if (visit_cell(key(x, y, z), visit)) return true;
+          if (visit_cell(x, y, z, visit)) return true;
     return false;
   }
 
  private:
   static constexpr int64_t kEmpty = -1;  // keys are non-negative (63 bits)
-  static constexpr size_t kInitialSlots = 1024;
+  static constexpr size_t kInitialSlots = 256;
+  static constexpr size_t kBlockCells = 64;  // 4 x 4 x 4
   struct Slot {
-    int64_t key = kEmpty;
-    int head = -1, tail = -1;  // first and last entry of the cell
+    int64_t key = kEmpty;  // the block's
+    int block = -1;        // its cells are heads_[64 block, 64 block + 64)
   };
   struct Entry {
     int id, next;
   };
 
   template <class Visit>
-  bool visit_cell(int64_t k, const Visit& visit) const {
-    const Slot* s = find_slot(k);
-    for (int e = s->head; e >= 0; e = entries_[static_cast<size_t>(e)].next)
+  bool visit_cell(int64_t x, int64_t y, int64_t z, const Visit& visit) const {
+    const Slot* s = find_slot(block_key(x, y, z));
+    if (s->key == kEmpty) return false;
+    const int head = heads_[static_cast<size_t>(s->block) * kBlockCells + in_block(x, y, z)];
+    for (int e = head; e >= 0; e = entries_[static_cast<size_t>(e)].next)
       if (visit(entries_[static_cast<size_t>(e)].id)) return true;
     return false;
   }
 
-  // The slot holding key k, or the empty slot where it would go.
+  // The slot holding block key k, or the empty slot where it would go.
   Slot* find_slot(int64_t k) { return const_cast<Slot*>(static_cast<const PointGrid*>(this)->find_slot(k)); }
   const Slot* find_slot(int64_t k) const {
     const size_t mask = slots_.size() - 1;
@@ -125,12 +134,18 @@ class PointGrid {
   }
 
   int64_t cell_of(double v) const { return static_cast<int64_t>(std::floor(v / cell_)); }
-  static int64_t key(int64_t x, int64_t y, int64_t z) {
-    return (x & 0x1FFFFF) | ((y & 0x1FFFFF) << 21) | ((z & 0x1FFFFF) << 42);
+  // A cell's block: its packed coordinates without their two low bits (cells 2^21 apart still
+  // share a key, and then a list).
+  static int64_t block_key(int64_t x, int64_t y, int64_t z) {
+    return ((x & 0x1FFFFF) >> 2) | (((y & 0x1FFFFF) >> 2) << 21) | (((z & 0x1FFFFF) >> 2) << 42);
+  }
+  static size_t in_block(int64_t x, int64_t y, int64_t z) {
+    return static_cast<size_t>((x & 3) << 4 | (y & 3) << 2 | (z & 3));
   }
   double cell_;
   std::vector<Slot> slots_;  // a power of two, at most a quarter full
   size_t used_ = 0;
+  std::vector<int> heads_, tails_;  // per cell of each block: its first and last entry, or -1
   std::vector<Entry> entries_;
 };
 

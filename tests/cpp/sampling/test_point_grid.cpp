@@ -1,11 +1,14 @@
 // PointGrid::any_near against a brute-force search: every point within the radius is visited
 // (radii under, at and over a cell; points far from the origin, where p -/+ radius rounds), and
-// the visit stops at the first true.
+// the visit stops at the first true; any_in_box visits cells in x, y, z order and a cell's ids in
+// insertion order (the thin-wall search's ties depend on that order).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
+#include <tuple>
 #include <vector>
 
 #include "core/sampling/point_grid.h"
@@ -89,6 +92,42 @@ TEST(PointGrid, AnyNearStopsAtTheFirstTrue) {
   }));
   EXPECT_EQ(visits, 4);  // ids 0..3, in insertion order, all in the query's own cell
   EXPECT_FALSE(grid.any_near({50.0, 0.0, 0.0}, 1.0, [](int) { return true; }));
+}
+
+TEST(PointGrid, AnyInBoxVisitsCellsInOrderAndEachCellsIdsAsInserted) {
+  // Around the origin (cells of negative coordinates, blocks split by the axes) and far off.
+  std::mt19937 rng(5);
+  for (const double origin : {0.0, -4.0e5}) {
+    std::uniform_real_distribution<double> coord(origin - 9.0, origin + 9.0);
+    const double cell = 0.7;
+    PointGrid grid(cell);
+    std::vector<Point3> points;
+    for (int i = 0; i < 5000; ++i) {
+      points.push_back({coord(rng), coord(rng), coord(rng)});
+      grid.insert(points.back(), i);
+    }
+    const auto cell_of = [&](double v) { return static_cast<long long>(std::floor(v / cell)); };
+    for (int q = 0; q < 50; ++q) {
+      Point3 lo{coord(rng), coord(rng), coord(rng)}, hi = lo;
+      for (int a = 0; a < 3; ++a) hi[a] += 0.1 + 4.0 * (rng() % 1000) / 1000.0;
+      std::vector<int> seen;
+      grid.any_in_box(lo, hi, [&](int id) {
+        seen.push_back(id);
+        return false;
+      });
+      // Every point in the box's cells, by (cell x, y, z), then by id (the insertion order).
+      std::vector<std::tuple<long long, long long, long long, int>> expected;
+      for (int id = 0; id < static_cast<int>(points.size()); ++id) {
+        const Point3& p = points[id];
+        bool in = true;
+        for (int a = 0; a < 3; ++a) in = in && cell_of(p[a]) >= cell_of(lo[a]) && cell_of(p[a]) <= cell_of(hi[a]);
+        if (in) expected.emplace_back(cell_of(p[0]), cell_of(p[1]), cell_of(p[2]), id);
+      }
+      std::sort(expected.begin(), expected.end());
+      ASSERT_EQ(seen.size(), expected.size());
+      for (std::size_t k = 0; k < seen.size(); ++k) ASSERT_EQ(seen[k], std::get<3>(expected[k])) << "visit " << k;
+    }
+  }
 }
 
 }  // namespace
