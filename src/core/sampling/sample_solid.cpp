@@ -142,19 +142,20 @@ namespace {
 
 using namespace sampling_detail;
 
-// The cell of the grids that the crowding tests ask: twice the largest radius they ask (the
-// face spacing), so that a test looks in 8 cells, not 27 (sampling at 250k samples took a
-// quarter less). Where walls are refined the radii are smaller and the spacing's cells are kept:
-// twice as large, their lists were longer than the lookups they saved.
-double crowding_cell(const SpacingField& field, bool refined) {
-  return refined ? field.uniform() : 2.0 * field.uniform();
-}
+// The crowding tests' grids have cells twice the radius they ask, so that a test looks in 8
+// cells, not 27: the Y-rod mount's sampling at 250k samples took a quarter less. The fixed
+// samples' grid is asked about the face spacing; a face's own grid about its spacing where it
+// curves most (its plan's) and up: twice the face spacing there, fillets' cells held so many
+// samples that NIST FTC 11's sampling took half as long again. A face's cells are at least the
+// spacing (a test then looks in 27 at most), and where walls are refined both grids keep cells
+// of the spacing: twice as large, their lists were longer than the lookups they saved.
+constexpr double kCellsPerRadius = 2.0;
 
 class Sampler {
  public:
   Sampler(SolidSampler::State& state, const SpacingField& field, const Progress& progress)
       : state_(state), f_(state.features), sp_(sample_spacing(field.uniform())), field_(field), progress_(progress),
-        grid_(crowding_cell(field, !field.is_uniform())), surfaces_(state.surfaces), classifiers_(state.classifiers), plans_(state.plans) {
+        grid_(field.is_uniform() ? kCellsPerRadius * field.uniform() : field.uniform()), surfaces_(state.surfaces), classifiers_(state.classifiers), plans_(state.plans) {
     out_.spacing = field.uniform();
     const int nf = f_.faces.Extent();
     surfaces_.resize(nf);
@@ -869,7 +870,8 @@ class Sampler {
   // take seconds (bench/cancel_latency.py), and a cancel must not wait.
   FaceInterior sample_face(int fi, const std::function<void(double)>& row) {
     FaceInterior in;
-    PointGrid own(crowding_cell(field_, field_.on_face(fi) < sp_.face));
+    PointGrid own(field_.on_face(fi) < sp_.face ? field_.uniform()
+                                                : std::max(field_.uniform(), kCellsPerRadius * face_plan(fi).spacing));
     // The face's own random stream: its samples do not depend on the order faces are sampled in.
     std::mt19937_64 rng(12345 + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(fi));
     std::uniform_real_distribution<double> jitter(-0.35, 0.35);
