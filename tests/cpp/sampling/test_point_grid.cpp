@@ -16,17 +16,24 @@
 namespace cadmedial {
 namespace {
 
+// n random points in coord's cube, inserted into grid with their index as id.
+std::vector<Point3> insert_random_points(PointGrid& grid, std::mt19937& rng,
+                                         std::uniform_real_distribution<double>& coord, int n) {
+  std::vector<Point3> points;
+  for (int i = 0; i < n; ++i) {
+    points.push_back({coord(rng), coord(rng), coord(rng)});
+    grid.insert(points.back(), i);
+  }
+  return points;
+}
+
 TEST(PointGrid, AnyNearVisitsEveryPointWithinTheRadius) {
   std::mt19937 rng(7);
   for (const double origin : {0.0, 1.0e6}) {
     std::uniform_real_distribution<double> coord(origin - 10.0, origin + 10.0);
     const double cell = 1.0;
     PointGrid grid(cell);
-    std::vector<Point3> points;
-    for (int i = 0; i < 20000; ++i) {
-      points.push_back({coord(rng), coord(rng), coord(rng)});
-      grid.insert(points.back(), i);
-    }
+    std::vector<Point3> points = insert_random_points(grid, rng, coord, 20000);
     // Points on cell walls too.
     for (int i = 0; i < 200; ++i) {
       const Point3 p{std::round(coord(rng)), std::round(coord(rng)), coord(rng)};
@@ -101,11 +108,7 @@ TEST(PointGrid, AnyInBoxVisitsCellsInOrderAndEachCellsIdsAsInserted) {
     std::uniform_real_distribution<double> coord(origin - 9.0, origin + 9.0);
     const double cell = 0.7;
     PointGrid grid(cell);
-    std::vector<Point3> points;
-    for (int i = 0; i < 5000; ++i) {
-      points.push_back({coord(rng), coord(rng), coord(rng)});
-      grid.insert(points.back(), i);
-    }
+    const std::vector<Point3> points = insert_random_points(grid, rng, coord, 5000);
     const auto cell_of = [&](double v) { return static_cast<long long>(std::floor(v / cell)); };
     for (int q = 0; q < 50; ++q) {
       Point3 lo{coord(rng), coord(rng), coord(rng)}, hi = lo;
