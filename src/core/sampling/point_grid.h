@@ -15,9 +15,9 @@ namespace cadmedial {
 /// probing) maps a block's key to its 64 cells' list heads, side by side in one array, and a
 /// cell's list of ids is kept in insertion order in one flat array. A query's 8 to 27 cells
 /// mostly fall in one or two blocks, a few cache lines, where with a slot per cell each was a
-/// line of its own: sampling the Y-rod mount at 250k samples spent a third of its candidate tests
-/// on those loads (bench/README.md). The slot of a block is a hash of its x and y plus its z, and
-/// the table is kept at most a quarter full.
+/// line of its own: a third of the candidate tests' time went to those loads when sampling the
+/// Y-rod mount at 250k samples (bench/README.md). The slot of a block is a hash of its x and y
+/// plus its z, and the table is kept at most a quarter full.
 class PointGrid {
  public:
   explicit PointGrid(double cell) : cell_(cell) { slots_.assign(kInitialSlots, Slot{}); }
@@ -50,17 +50,17 @@ class PointGrid {
   /// Calls visit(id) for every inserted point in the cells that meet the cube of half-side
   /// `radius` around p (so every point within `radius` of p, and others), p's own cell first, then
   /// the others in x, y, z order; a cell's ids in insertion order. Stops and returns true as soon
-  /// as visit returns true. These cells are among the block of reach ceil(radius / cell) (at least
-  /// 1) around p's cell, the block visited before: with radius at most half a cell, 8 cells of its
-  /// 27 (most of sampling's hash lookups were in that block).
+  /// as visit returns true. These cells are among the cube of reach ceil(radius / cell) (at least
+  /// 1) around p's cell, the cube visited before: with radius at most half a cell, 8 cells of its
+  /// 27 (most of sampling's lookups were in that cube).
   template <class Visit>
   bool any_near(const Point3& p, double radius, const Visit& visit) const {
     const int64_t cx = cell_of(p[0]), cy = cell_of(p[1]), cz = cell_of(p[2]);
-    const int64_t block = radius <= cell_ ? 1 : static_cast<int64_t>(std::ceil(radius / cell_));
+    const int64_t reach_cells = radius <= cell_ ? 1 : static_cast<int64_t>(std::ceil(radius / cell_));
     // A margin far above the rounding of p -/+ radius: a point within radius is never left out.
     const double reach = radius + 1e-12 * (radius + std::abs(p[0]) + std::abs(p[1]) + std::abs(p[2]));
-    const auto first = [&](double v, int64_t c) { return std::max(cell_of(v - reach), c - block); };
-    const auto last = [&](double v, int64_t c) { return std::min(cell_of(v + reach), c + block); };
+    const auto first = [&](double v, int64_t c) { return std::max(cell_of(v - reach), c - reach_cells); };
+    const auto last = [&](double v, int64_t c) { return std::min(cell_of(v + reach), c + reach_cells); };
     const int64_t x0 = first(p[0], cx), y0 = first(p[1], cy), z0 = first(p[2], cz);
     const int64_t x1 = last(p[0], cx), y1 = last(p[1], cy), z1 = last(p[2], cz);
     // The point's own cell first: while sampling, most candidates are turned down there.
