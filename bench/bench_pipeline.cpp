@@ -1,12 +1,14 @@
 // Speed of the pipeline per stage beside CGAL's bare Delaunay triangulation of the same samples,
 // in the same run (the machine is shared and noisy: only ratios within one run mean much).
 //
-//   bench_pipeline INPUT [--samples N1,N2,...] [--repeat K] [--json FILE]
+//   bench_pipeline INPUT [--samples N1,N2,...] [--repeat K] [--json FILE] [--uniform]
 //
 // For each target count the spacing is calibrated by sampling until the count is within 3 %; then
 // compute_medial_axis runs at that spacing, as the program does, and the bare Delaunay after it,
 // K times in turn (default 3): each is reported at its fastest (the stages from the fastest
-// compute), so that another process's burst spoils one try, not the row.
+// compute), so that another process's burst spoils one try, not the row. With --uniform, thin walls
+// are not sampled again more densely (the program's --uniform): the cost of that refinement shows
+// against a run without it.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -52,7 +54,7 @@ double stage(const Timings& t, const std::string& name) {
 
 // The whole pipeline as the program runs it (compute_medial_axis at a given spacing, stages
 // overlapping where they do), then CGAL's bare Delaunay of the same samples.
-Row run(const TopoDS_Solid& solid, std::size_t target, double spacing0, int repeat) {
+Row run(const TopoDS_Solid& solid, std::size_t target, double spacing0, int repeat, bool uniform) {
   Row row;
   row.target = target;
   const Features features = classify_features(solid);
@@ -65,6 +67,7 @@ Row run(const TopoDS_Solid& solid, std::size_t target, double spacing0, int repe
   }
   ComputeParams params;
   params.sampling.spacing = h;
+  params.sampling.adapt_to_walls = !uniform;
   row.spacing = h;
   // The same samples again (sampling is deterministic; thin walls refined as the pipeline does),
   // for the yardstick.
@@ -103,18 +106,25 @@ std::vector<std::size_t> parse_counts(const std::string& text) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: bench_pipeline INPUT [--samples N1,N2,...] [--repeat K] [--json FILE]\n");
+    std::fprintf(stderr, "usage: bench_pipeline INPUT [--samples N1,N2,...] [--repeat K] [--json FILE] [--uniform]\n");
     return 2;
   }
   const std::string input = argv[1];
   std::vector<std::size_t> counts{10000, 66686, 250000};
   std::string json_path;
   int repeat = 3;
-  for (int i = 2; i + 1 < argc; i += 2) {
+  bool uniform = false;
+  for (int i = 2; i < argc; ++i) {
     const std::string opt = argv[i];
+    if (opt == "--uniform") {
+      uniform = true;
+      continue;
+    }
+    if (i + 1 >= argc) break;
     if (opt == "--samples") counts = parse_counts(argv[i + 1]);
     else if (opt == "--json") json_path = argv[i + 1];
     else if (opt == "--repeat") repeat = std::max(1, std::atoi(argv[i + 1]));
+    ++i;
   }
   try {
     const std::vector<TopoDS_Solid> solids = extract_solids(read_shape_file(input));
@@ -130,7 +140,7 @@ int main(int argc, char** argv) {
       SamplingParams sp;
       sp.target_samples = counts[k];
       const double h0 = plan_sampling(solid, sp).spacing;
-      const Row r = run(solid, counts[k], h0, repeat);
+      const Row r = run(solid, counts[k], h0, repeat, uniform);
       const Timings& t = r.timings;
       const double total = stage(t, "total");
       const double medial = total - stage(t, "setup") - stage(t, "features") - stage(t, "sampling");
