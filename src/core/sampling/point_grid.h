@@ -22,7 +22,9 @@ class PointGrid {
  public:
   explicit PointGrid(double cell) : cell_(cell) { slots_.assign(kInitialSlots, Slot{}); }
 
-  void insert(const Point3& p, int id) {
+  /// Adds point p with id; returns the index of p's cell, below cells(), for data a caller keeps
+  /// per cell (an index stays its cell's as more points come).
+  size_t insert(const Point3& p, int id) {
     const int64_t x = cell_of(p[0]), y = cell_of(p[1]), z = cell_of(p[2]);
     const int64_t k = block_key(x, y, z);
     Slot* s = find_slot(k);
@@ -45,7 +47,12 @@ class PointGrid {
     else
       entries_[static_cast<size_t>(tails_[c])].next = entry;
     tails_[c] = entry;
+    return c;
   }
+
+  /// How many cell indices insert() has handed out so far (and the ones it may yet use in the
+  /// blocks it has made): a bound for arrays over them.
+  size_t cells() const { return heads_.size(); }
 
   /// Calls visit(id) for every inserted point in the cells that meet the cube of half-side
   /// `radius` around p (so every point within `radius` of p, and others), p's own cell first, then
@@ -79,12 +86,19 @@ class PointGrid {
   /// returns true.
   template <class Visit>
   bool any_in_box(const Point3& lo, const Point3& hi, const Visit& visit) const {
+    return any_in_box(lo, hi, visit, [](size_t) { return false; });
+  }
+
+  /// As any_in_box(lo, hi, visit), but the ids of a cell for which skip(its index, as insert()
+  /// returned it) is true are not visited.
+  template <class Visit, class Skip>
+  bool any_in_box(const Point3& lo, const Point3& hi, const Visit& visit, const Skip& skip) const {
     const int64_t x0 = cell_of(lo[0]), y0 = cell_of(lo[1]), z0 = cell_of(lo[2]);
     const int64_t x1 = cell_of(hi[0]), y1 = cell_of(hi[1]), z1 = cell_of(hi[2]);
     for (int64_t x = x0; x <= x1; ++x)
       for (int64_t y = y0; y <= y1; ++y)
         for (int64_t z = z0; z <= z1; ++z)
-          if (visit_cell(x, y, z, visit)) return true;
+          if (visit_cell(x, y, z, visit, skip)) return true;
     return false;
   }
 
@@ -102,9 +116,15 @@ class PointGrid {
 
   template <class Visit>
   bool visit_cell(int64_t x, int64_t y, int64_t z, const Visit& visit) const {
+    return visit_cell(x, y, z, visit, [](size_t) { return false; });
+  }
+  template <class Visit, class Skip>
+  bool visit_cell(int64_t x, int64_t y, int64_t z, const Visit& visit, const Skip& skip) const {
     const Slot* s = find_slot(block_key(x, y, z));
     if (s->key == kEmpty) return false;
-    const int head = heads_[static_cast<size_t>(s->block) * kBlockCells + in_block(x, y, z)];
+    const size_t c = static_cast<size_t>(s->block) * kBlockCells + in_block(x, y, z);
+    const int head = heads_[c];
+    if (head < 0 || skip(c)) return false;
     for (int e = head; e >= 0; e = entries_[static_cast<size_t>(e)].next)
       if (visit(entries_[static_cast<size_t>(e)].id)) return true;
     return false;

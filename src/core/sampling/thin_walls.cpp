@@ -46,10 +46,15 @@ class WallMeter {
         // NIST CTC 01 this took 0.23 s against 0.39 s with cells of the whole reach around p (one
         // thread, same radii); on the Y-rod mount, with fewer samples near walls, the same (0.09 s).
         grid_(reach_ * 2.0 / 3.0), convex_(spacing) {
+    std::vector<std::size_t> cell;  // per wall sample, its cell in grid_
     for (std::size_t i = 0; i < s.size(); ++i) {
-      if (on_wall(s, i)) grid_.insert(s.points[i], static_cast<int>(i)), walls_.push_back(static_cast<int>(i));
+      if (on_wall(s, i)) {
+        cell.push_back(grid_.insert(s.points[i], static_cast<int>(i)));
+        walls_.push_back(static_cast<int>(i));
+      }
       if (s.edge_convex[i] == 1) convex_.insert(s.points[i], static_cast<int>(i));
     }
+    make_cones(cell);
     for (const auto& [a, b] : wedges) wedge_.push_back(pair_key(a, b)), wedge_.push_back(pair_key(b, a));
     std::sort(wedge_.begin(), wedge_.end());
   }
@@ -80,6 +85,17 @@ class WallMeter {
         lo[a] = p[a] - std::min(reach_, std::max(0.0, slab * na) + disc) - margin;
         hi[a] = p[a] + std::min(reach_, std::max(0.0, -slab * na) + disc) + margin;
       }
+      // A cell none of whose normals can face n holds no candidate (most cells: on the Y-rod mount
+      // 14 % of the samples visited face the query, on NIST CTC 02 32 %).
+      const auto cannot_face = [this, n](std::size_t c) {
+        const int k = cone_of_[c];
+        if (k < 0) return false;
+        const Cone& cone = cones_[static_cast<std::size_t>(k)];
+        const double cb = dot3(*n, cone.axis), sb = std::sqrt(std::max(0.0, 1.0 - cb * cb));
+        // cos(angle(n, axis) + the cone's half-angle), a lower bound of n's dot product with any
+        // of the cell's normals; facing() needs -0.5 or less (rounding: a millionth to spare).
+        return cb * cone.cos_half - sb * cone.sin_half > -0.5 + 1e-6;
+      };
       grid_.any_in_box(lo, hi, [&](int j) {
         if (!facing(*n, j)) return false;
         if (by_edge && s.face[i] >= 0 && s.face[j] >= 0 && s.face[j] != s.face[i] && dot3(*n, s.normal[j]) < wedge_dot_ &&
@@ -97,7 +113,7 @@ class WallMeter {
         if (dot3(*n, s.normal[j]) < -0.95 && depth * depth >= kParallelSlope2 * (d2 - depth * depth))
           radius = std::min(radius, 0.5 * depth);
         return false;
-      });
+      }, cannot_face);
     }
     return radius < below_ ? radius : std::numeric_limits<double>::infinity();
   }
@@ -107,10 +123,54 @@ class WallMeter {
     return dot3(n, s_.normal[j]) <= -0.5 || (on_edge(s_, j) && dot3(n, s_.normal2[j]) <= -0.5);
   }
 
+  // Per cell of grid_, the cone around its normals' mean that holds them all (an edge sample's
+  // two), for the cells whose normals lie within 60 degrees of it: only those can be skipped.
+  void make_cones(const std::vector<std::size_t>& cell) {
+    cone_of_.assign(grid_.cells(), -1);
+    auto for_each_normal = [this](std::size_t w, const auto& fn) {
+      const std::size_t i = static_cast<std::size_t>(walls_[w]);
+      fn(s_.normal[i]);
+      if (on_edge(s_, i)) fn(s_.normal2[i]);
+    };
+    for (std::size_t w = 0; w < walls_.size(); ++w) {
+      int& k = cone_of_[cell[w]];
+      if (k < 0) k = static_cast<int>(cones_.size()), cones_.push_back(Cone{});
+      Point3& sum = cones_[static_cast<std::size_t>(k)].axis;
+      for_each_normal(w, [&sum](const Point3& m) {
+        for (int a = 0; a < 3; ++a) sum[a] += m[a];
+      });
+    }
+    for (Cone& cone : cones_) {
+      const double len = std::sqrt(dot3(cone.axis, cone.axis));
+      for (int a = 0; a < 3; ++a) cone.axis[a] = len > 0 ? cone.axis[a] / len : 0.0;
+      cone.cos_half = len > 0 ? 1.0 : -1.0;
+    }
+    for (std::size_t w = 0; w < walls_.size(); ++w) {
+      Cone& cone = cones_[static_cast<std::size_t>(cone_of_[cell[w]])];
+      for_each_normal(w, [&cone](const Point3& m) { cone.cos_half = std::min(cone.cos_half, dot3(cone.axis, m)); });
+    }
+    for (int& k : cone_of_) {
+      if (k < 0) continue;
+      Cone& cone = cones_[static_cast<std::size_t>(k)];
+      if (!(cone.cos_half > 0.5)) {
+        k = -1;
+        continue;
+      }
+      cone.sin_half = std::sqrt(std::max(0.0, 1.0 - cone.cos_half * cone.cos_half));
+    }
+  }
+
+  struct Cone {
+    Point3 axis{0, 0, 0};  ///< unit
+    double cos_half = 1.0, sin_half = 0.0;
+  };
+
   const Samples& s_;
   double spacing_, wedge_dot_, below_, reach_;
   PointGrid grid_, convex_;
   std::vector<int> walls_;
+  std::vector<int> cone_of_;  // per cell of grid_: its cone in cones_, or -1 (not skipped)
+  std::vector<Cone> cones_;
   std::vector<std::int64_t> wedge_;  // the wedges' face pairs in both orders, sorted
 };
 

@@ -1,11 +1,13 @@
 // PointGrid::any_near against a brute-force search: every point within the radius is visited
 // (radii under, at and over a cell; points far from the origin, where p -/+ radius rounds), and
 // the visit stops at the first true; any_in_box visits cells in x, y, z order and a cell's ids in
-// insertion order (the thin-wall search's ties depend on that order).
+// insertion order (the thin-wall search's ties depend on that order), and skips the cells asked
+// by the index insert() gave them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 #include <set>
 #include <tuple>
@@ -130,6 +132,57 @@ TEST(PointGrid, AnyInBoxVisitsCellsInOrderAndEachCellsIdsAsInserted) {
       ASSERT_EQ(seen.size(), expected.size());
       for (std::size_t k = 0; k < seen.size(); ++k) ASSERT_EQ(seen[k], std::get<3>(expected[k])) << "visit " << k;
     }
+  }
+}
+
+TEST(PointGrid, InsertNamesItsCellAndTheBoxQuerySkipsTheCellsAsked) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> coord(-9.0, 9.0);
+  const double cell = 0.7;
+  PointGrid grid(cell);
+  const auto cell_of = [&](double v) { return static_cast<long long>(std::floor(v / cell)); };
+  std::vector<Point3> points;
+  std::vector<std::size_t> index;  // per point, the cell index insert() returned
+  for (int id = 0; id < 5000; ++id) {
+    points.push_back({coord(rng), coord(rng), coord(rng)});
+    index.push_back(grid.insert(points.back(), id));
+  }
+  // One index per cell, and the same for every point of it (later points do not move it).
+  std::map<std::tuple<long long, long long, long long>, std::size_t> of_cell;
+  std::set<std::size_t> used;
+  for (std::size_t id = 0; id < points.size(); ++id) {
+    ASSERT_LT(index[id], grid.cells());
+    const auto key = std::make_tuple(cell_of(points[id][0]), cell_of(points[id][1]), cell_of(points[id][2]));
+    const auto [it, fresh] = of_cell.emplace(key, index[id]);
+    if (fresh) {
+      EXPECT_TRUE(used.insert(index[id]).second) << "two cells share index " << index[id];
+    } else {
+      EXPECT_EQ(it->second, index[id]) << "point " << id;
+    }
+  }
+  // Skipping a random third of the cells drops exactly their ids, the others in the same order.
+  std::set<std::size_t> skipped;
+  for (std::size_t c : used)
+    if (rng() % 3 == 0) skipped.insert(c);
+  for (int q = 0; q < 50; ++q) {
+    Point3 lo{coord(rng), coord(rng), coord(rng)}, hi = lo;
+    for (int a = 0; a < 3; ++a) hi[a] += 0.1 + 4.0 * (rng() % 1000) / 1000.0;
+    std::vector<int> all, kept;
+    grid.any_in_box(lo, hi, [&](int id) {
+      all.push_back(id);
+      return false;
+    });
+    grid.any_in_box(
+        lo, hi,
+        [&](int id) {
+          kept.push_back(id);
+          return false;
+        },
+        [&](std::size_t c) { return skipped.count(c) > 0; });
+    std::vector<int> expected;
+    for (int id : all)
+      if (!skipped.count(index[static_cast<std::size_t>(id)])) expected.push_back(id);
+    EXPECT_EQ(kept, expected) << "query " << q;
   }
 }
 

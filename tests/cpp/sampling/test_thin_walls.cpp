@@ -1,13 +1,18 @@
 // The thin-wall check: on a plate thinner than two spacings it finds the plate's half thickness
 // (the medial radius there) and the pipeline warns; on a block whose walls are far apart, and on
-// a wedge whose faces only meet at its convex edge, it finds nothing.
+// a wedge whose faces only meet at its convex edge, it finds nothing. Its radii are those of its
+// rule over every pair of wall samples (a brute-force search).
 #include <cmath>
+#include <limits>
+#include <set>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "core/features/classify_features.h"
 #include "core/pipeline/compute_medial_axis.h"
+#include "core/sampling/point_grid.h"
 #include "core/sampling/sample_solid.h"
 #include "core/sampling/thin_walls.h"
 #include "support/hard_solids.h"
@@ -78,6 +83,77 @@ TEST(ThinWalls, TheSearchFromAGuessFindsTheSameWall) {
       const ThinWall near = thinnest_wall_near(samples, c.spacing, convex_face_pairs(f), guess);
       EXPECT_EQ(near.radius, full.radius) << guess;
       EXPECT_EQ(near.at, full.at) << guess;
+    }
+  }
+}
+
+// wall_radii's rule (thin_walls.h, the search in WallMeter::radius) by brute force over every pair of
+// wall samples: the same radii, to the bit, whichever cells the grid search visits or skips.
+double radius_by_brute_force(const Samples& s, std::size_t i, double spacing,
+                             const std::set<std::pair<int, int>>& wedges, double wedge_dot) {
+  auto dot = [](const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto on_edge = [&](std::size_t j) { return s.tag[j] == SampleTag::Edge || s.tag[j] == SampleTag::Ball; };
+  auto on_wall = [&](std::size_t j) {
+    return s.tag[j] == SampleTag::Face || s.tag[j] == SampleTag::Triplet || (on_edge(j) && s.edge_convex[j] != 1);
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  if (!on_wall(i)) return inf;
+  const Point3& p = s.points[i];
+  const double reach = 2.0 * spacing;
+  bool by_edge = false;
+  for (std::size_t j = 0; j < s.size(); ++j)
+    by_edge = by_edge || (s.edge_convex[j] == 1 && distance2(s.points[j], p) < spacing * spacing);
+  double radius = inf;
+  for (const Point3* n : {&s.normal[i], on_edge(i) ? &s.normal2[i] : nullptr}) {
+    if (!n) continue;
+    for (std::size_t j = 0; j < s.size(); ++j) {
+      if (!on_wall(j)) continue;
+      if (!(dot(*n, s.normal[j]) <= -0.5 || (on_edge(j) && dot(*n, s.normal2[j]) <= -0.5))) continue;
+      if (by_edge && s.face[i] >= 0 && s.face[j] >= 0 && s.face[j] != s.face[i] && dot(*n, s.normal[j]) < wedge_dot &&
+          wedges.count({s.face[i], s.face[j]}))
+        continue;
+      const Point3 d{s.points[j][0] - p[0], s.points[j][1] - p[1], s.points[j][2] - p[2]};
+      const double d2 = dot(d, d), depth = -dot(d, *n);
+      if (!(depth > 0 && d2 < reach * reach) || depth > reach) continue;
+      radius = std::min(radius, d2 / (2.0 * depth));
+      if (dot(*n, s.normal[j]) < -0.95 && depth * depth >= 0.04 * (d2 - depth * depth)) radius = std::min(radius, 0.5 * depth);
+    }
+  }
+  return radius < spacing ? radius : inf;
+}
+
+// Thin walls between planes, between a plane and a hole's cylinder, across fillets (smooth edges
+// are walls) and in a wedge (its faces are not walls for each other near the sharp edge).
+TEST(ThinWalls, TheRadiiAreTheShrinkingBallsOverEveryWallSample) {
+  struct Case {
+    const char* name;
+    TopoDS_Solid solid;
+    double spacing;
+  };
+  const Case cases[] = {{"plate", test::make_box(12, 10, 0.8), 1.0},
+                        {"block with a hole near its sides", test::make_block_with_hole(10, 10, 3, 4.6), 0.6},
+                        {"filleted L block", test::make_filleted_l_block(8, 1.0, 3, 0.4, 0.3), 0.5},
+                        {"wedge", test::make_sharp_wedge(20, 12, 4), 0.5}};
+  for (const Case& c : cases) {
+    const Features f = classify_features(c.solid);
+    const Samples samples = sample_solid(c.solid, f, c.spacing);
+    std::set<std::pair<int, int>> wedges;
+    for (const auto& [a, b] : convex_face_pairs(f)) wedges.insert({a, b}), wedges.insert({b, a});
+    for (const double wedge_dot : {1.0, -0.95}) {
+      std::vector<double> expected(samples.size());
+      std::size_t finite = 0;
+      for (std::size_t i = 0; i < samples.size(); ++i) {
+        expected[i] = radius_by_brute_force(samples, i, c.spacing, wedges, wedge_dot);
+        finite += std::isfinite(expected[i]);
+      }
+      EXPECT_GT(finite, 20u) << c.name << ": too few thin samples to tell";
+      for (const int threads : {1, 2}) {
+        const std::vector<double> radii = wall_radii(samples, c.spacing, convex_face_pairs(f), wedge_dot, {}, threads);
+        ASSERT_EQ(radii.size(), samples.size());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < samples.size(); ++i) differ += !(radii[i] == expected[i]);
+        EXPECT_EQ(differ, 0u) << c.name << ", wedge_dot " << wedge_dot << ", " << threads << " thread(s)";
+      }
     }
   }
 }
