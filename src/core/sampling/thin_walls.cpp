@@ -85,8 +85,8 @@ class WallMeter {
         lo[a] = p[a] - std::min(reach_, std::max(0.0, slab * na) + disc) - margin;
         hi[a] = p[a] + std::min(reach_, std::max(0.0, -slab * na) + disc) + margin;
       }
-      // A cell none of whose normals can face n holds no candidate (most cells: on the Y-rod mount
-      // 14 % of the samples visited face the query, on NIST CTC 02 32 %).
+      // A cell none of whose normals can face n holds no candidate, and most samples the box
+      // visits do not face it (14 % do on the Y-rod mount, 32 % on NIST CTC 02).
       const auto cannot_face = [this, n](std::size_t c) {
         const int k = cone_of_[c];
         if (k < 0) return false;
