@@ -69,7 +69,8 @@ class MedialAxisResult:
                 carries, where the axis is a curve (a torus's core circle)
     edge_solid  (E,) int32 index of the input solid each edge belongs to
     stats       dict: samples, vertices, faces, edges, spacing, timings {stage: seconds},
-                peak_rss_mb, solids (per-solid figures); empty for a loaded file
+                peak_rss_mb, warnings, skipped (what the shape held beside its solids and
+                was left out), solids (per-solid figures); empty for a loaded file
     Arrays are read-only views into the engine's mesh.
     """
 

@@ -5,9 +5,9 @@
 
 #include "commands.h"
 #include "core/errors.h"
+#include "core/io/read_shape.h"
 #include "core/io/write_medial_mesh.h"
 #include "core/pipeline/compute_medial_axis.h"
-#include "load_solids.h"
 #include "output_files.h"
 #include "progress_printer.h"
 
@@ -20,24 +20,29 @@ int run_compute(const Args& args) {
   check_writable(args.output);
   if (!args.stats.empty()) check_writable(args.stats);
 
-  const LoadedSolids loaded = load_solids(args.input, false);
+  // The engine extracts and checks the solids itself (once: on NIST CTC 02 a second extraction
+  // here, its signed volume, took 0.17 s).
+  const TopoDS_Shape shape = read_shape_file(args.input);  // its messages already name the file
   ProgressPrinter printer(args.quiet);
   ComputeResult result;
   try {
-    result = compute_medial_axis(loaded.compound, args.params, std::ref(printer));
+    result = compute_medial_axis(shape, args.params, std::ref(printer));
   } catch (const InvalidInput& e) {
     throw InvalidInput(args.input + ": " + e.what());
   } catch (const GeometryError& e) {
     throw GeometryError(args.input + ": " + e.what());
   }
 
+  for (const std::string& what : result.stats.skipped)
+    std::fprintf(stderr, "cadmedial: warning: %s: skipped %s\n", args.input.c_str(), what.c_str());
   write_medial_mesh(result.mesh, args.output);
   if (!args.stats.empty()) write_text_atomically(args.stats, stats_to_json(result.stats));
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream summary;
   summary.precision(4);
-  summary << "cadmedial: " << loaded.solids.size() << (loaded.solids.size() == 1 ? " solid, " : " solids, ")
+  const std::size_t solids = result.stats.solids.size();
+  summary << "cadmedial: " << solids << (solids == 1 ? " solid, " : " solids, ")
           << result.stats.samples << " samples (spacing " << result.stats.spacing << "), medial mesh of "
           << result.mesh.num_vertices() << " vertices";
   // Edges only when there are some: most parts have none, and the line stays as it was for them.

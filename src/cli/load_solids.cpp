@@ -9,12 +9,11 @@
 
 namespace cadmedial::cli {
 
-LoadedSolids load_solids(const std::string& path, bool brep_check) {
+LoadedSolids load_solids(const std::string& path) {
   LoadedSolids loaded;
   const TopoDS_Shape shape = read_shape_file(path);  // its messages already name the file
   try {
-    std::vector<DeferredCheck> engine_checks;  // the engine checks the solids it is given
-    loaded.solids = brep_check ? extract_solids(shape, &loaded.skipped) : extract_solids(shape, &loaded.skipped, engine_checks);
+    loaded.solids = extract_solids(shape, &loaded.skipped);
   } catch (const InvalidInput& e) {
     throw InvalidInput(path + ": " + e.what());
   }

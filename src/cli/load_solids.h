@@ -16,8 +16,8 @@ struct LoadedSolids {
 };
 
 /// read_shape_file + extract_solids; InvalidInput messages start with `path: `. What was skipped
-/// is printed on stderr as a warning. Without `brep_check`, BRepCheck_Analyzer is left to the
-/// engine, which runs it beside the triangulation (NIST CTC 02: 0.3 s that compute ran twice).
-LoadedSolids load_solids(const std::string& path, bool brep_check = true);
+/// is printed on stderr as a warning. (`compute` leaves all this to the engine, which extracts
+/// the solids and runs BRepCheck_Analyzer beside the triangulation.)
+LoadedSolids load_solids(const std::string& path);
 
 }  // namespace cadmedial::cli

@@ -12,7 +12,9 @@ class ProgressPrinter {
   explicit ProgressPrinter(bool quiet) : quiet_(quiet) {}
 
   bool operator()(const std::string& stage, double fraction) {
-    if (quiet_) return true;
+    // The engine's first stage extracts and checks the solids, where most refusals happen: a
+    // refusal stays the one line on stderr that it is when nothing was computed.
+    if (quiet_ || stage == "reading") return true;
     const int quarter = fraction >= 1.0 ? 4 : fraction <= 0.0 ? 0 : static_cast<int>(fraction * 4.0);
     if (stage != stage_) {
       stage_ = stage;

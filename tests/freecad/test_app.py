@@ -279,6 +279,24 @@ def test_walls_thinner_than_two_spacings_are_reported_as_a_warning(doc, capfd):
     assert "thinner than two sample spacings" not in out + err
 
 
+def test_a_loose_face_beside_the_solid_is_skipped_with_a_warning(doc, capfd):
+    # A compound of a box and a construction face above it (as NIST CTC 02 and 04 have): the
+    # axis is the box's alone, and the report view says what was left out.
+    box = Part.makeBox(10, 20, 30)
+    face = Part.makePlane(5, 5, FreeCAD.Vector(0, 0, 40))
+    part = doc.addObject("Part::Feature", "WithFace")
+    part.Shape = Part.makeCompound([box, face])
+    doc.recompute()
+    capfd.readouterr()
+    feature = medial_app.make_medial_axis(part, samples=SAMPLES)
+    out, err = capfd.readouterr()
+    assert feature.Status == "ok"
+    assert feature.Label + ": skipped 1 loose face" in out + err
+    points = mesh_points(feature)
+    assert len(points) > 0
+    assert points[:, 2].max() <= 30.0 + 1e-9
+
+
 MODELS = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir, os.pardir,
                                       "shared", "data", "models"))
 

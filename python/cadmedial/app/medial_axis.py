@@ -107,6 +107,10 @@ class MedialAxis:
         # e.g. walls too thin for the spacing: the result stands, the user should know.
         for warning in result.stats.get("warnings", []):
             App.Console.PrintWarning("%s: %s\n" % (obj.Label, warning))
+        # e.g. a construction surface beside the solid: left out of the axis, which the user
+        # may not expect of a compound.
+        for what in result.stats.get("skipped", []):
+            App.Console.PrintWarning("%s: skipped %s\n" % (obj.Label, what))
 
     def _take_pending(self, obj):
         pending, self.pending = self.pending, None

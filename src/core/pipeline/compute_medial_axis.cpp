@@ -411,7 +411,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
     // BRepCheck_Analyzer, most of the set-up's time, runs on the second thread while CGAL
     // triangulates the first solid (that core is idle then); the other checks run here.
     std::vector<DeferredCheck> checks;
-    const std::vector<TopoDS_Solid> solids = extract_solids(shape, nullptr, checks);
+    const std::vector<TopoDS_Solid> solids = extract_solids(shape, &stats.skipped, checks);
     add_timing(stats.timings, "setup", seconds_since(t0));
     const int n = static_cast<int>(solids.size());
 

@@ -51,6 +51,9 @@ struct ComputeStats {
   /// What the user should know about the result (e.g. walls too thin for the spacing), one
   /// sentence each.
   std::vector<std::string> warnings;
+  /// What the shape held beside its solids and the engine left out (extract_solids' `skipped`:
+  /// open construction surfaces, loose edges), one phrase each.
+  std::vector<std::string> skipped;
   double peak_rss_mb = 0.0;
 };
 
@@ -81,7 +84,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
                                   const Progress& progress = {});
 
 /// JSON object with samples, vertices, faces, edges, spacing, timings {stage: seconds}, peak_rss_mb,
-/// solids.
+/// warnings, skipped, solids.
 std::string stats_to_json(const ComputeStats& stats);
 
 /// Peak resident set size of this process so far, MiB.

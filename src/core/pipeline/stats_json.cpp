@@ -59,6 +59,9 @@ std::string stats_to_json(const ComputeStats& stats) {
   j += "  \"warnings\": [";
   for (std::size_t i = 0; i < stats.warnings.size(); ++i) j += (i ? ", " : "") + quoted(stats.warnings[i]);
   j += "],\n";
+  j += "  \"skipped\": [";
+  for (std::size_t i = 0; i < stats.skipped.size(); ++i) j += (i ? ", " : "") + quoted(stats.skipped[i]);
+  j += "],\n";
   j += "  \"solids\": [";
   for (std::size_t i = 0; i < stats.solids.size(); ++i) {
     const SolidStats& s = stats.solids[i];

@@ -4,12 +4,15 @@
 
 #include <sys/wait.h>
 
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
+#include <gp_Pln.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -217,6 +220,31 @@ TEST(Cli, ComputeWritesAMeshInsideTheCubeAndValidStats) {
   std::vector<std::string> names = dir.entries();
   std::sort(names.begin(), names.end());
   EXPECT_EQ(names, (std::vector<std::string>{"box.brep", "cube.json", "cube.ply"}));
+}
+
+// A file with a solid and a loose construction face (as NIST CTC 02 and 04 have): the solid is
+// computed, the face left out, and both the warning and the stats say so. Nothing of the axis
+// comes from the face (it lies at z = 10, far above the unit cube).
+TEST(Cli, ComputeSkipsALooseFaceBesideTheSolidAndSaysSo) {
+  TempDir dir;
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  b.Add(c, BRepPrimAPI_MakeBox(1, 1, 1).Shape());
+  b.Add(c, BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 10), gp_Dir(0, 0, 1)), 0, 1, 0, 1).Face());
+  const std::string input = dir.file("with_face.brep"), output = dir.file("out.ply"), stats = dir.file("out.json");
+  BRepTools::Write(c, input.c_str());
+  const CliRun r = run(dir, {"compute", input, "-o", output, "--samples", "1500", "--stats", stats, "--quiet"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  // One line: the warning, naming the file.
+  EXPECT_EQ(r.err.rfind("cadmedial: warning: " + input + ": skipped 1 loose face", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.out.find("cadmedial: 1 solid, "), std::string::npos) << r.out;
+  const std::string json = test::read_file(stats);
+  EXPECT_NE(json.find("\"skipped\": [\"1 loose face"), std::string::npos) << json;
+  const MedialMesh m = read_medial_mesh(output);
+  ASSERT_GT(m.num_faces(), 0u);
+  for (const Point3& v : m.vertices) EXPECT_LE(v[2], 1.0 + 1e-9);
 }
 
 // The summary line counts what the file holds; edges are named only when there are some.
