@@ -168,10 +168,14 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
       for (int k = mc.start[f]; k < mc.start[f + 1]; ++k) {
         if (!outside(mc.nodes[k])) continue;
         const int r = find_root(parent, mc.nodes[k]);
-        if (root >= 0 && r != root) two = true, spoiled[r] = 1;
+        two = two || (root >= 0 && r != root);
         root = r;
       }
-      if (two) spoiled[root] = 1;
+      // Every group at the facet, the first one met too (marking only those met after a change
+      // let a group be filled without this facet, as if it were whole).
+      if (two)
+        for (int k = mc.start[f]; k < mc.start[f + 1]; ++k)
+          if (outside(mc.nodes[k])) spoiled[find_root(parent, mc.nodes[k])] = 1;
       group_face.push_back({root, f});
     }
   std::sort(group_face.begin(), group_face.end());
