@@ -91,10 +91,10 @@ struct MedialComplex {
   CellArray<Point3> centers;   ///< circumcentre per cell id
   CellArray<double> radii;     ///< circumradius per cell id
   CellArray<std::uint8_t> flat;  ///< per cell id: 1 while its samples are coplanar to rounding (settle_flat_cells)
-  /// per cell id: 1 for a Voronoi vertex surely outside, far off (mark_far_outside): the facets at
-  /// it are not built
-  CellArray<std::uint8_t> far_outside;
-  /// per cell id: 2 if a facet not built (far_outside) that was selected has it as a corner, 1 if
+  /// per cell id: 1 for a Voronoi vertex surely outside, far off (mark_far_outside) or by its
+  /// samples' votes (mark_voted_outside): the facets at it are not built
+  CellArray<std::uint8_t> surely_outside;
+  /// per cell id: 2 if a facet not built (surely_outside) that was selected has it as a corner, 1 if
   /// only unselected ones do, else 0 (what label_inside would have read from those facets)
   std::vector<std::uint8_t> unbuilt_use;
   std::vector<int> start{0};     ///< CSR over nodes

@@ -114,7 +114,7 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
   on_two_halves(nc, [&](int, std::size_t begin, std::size_t end) {
     for (std::size_t c = begin; c < end; ++c) {
       const int cell = static_cast<int>(c);
-      straddling[c] = !mc.far_outside[c] && outside(cell) && straddles(mc, samples, cell);
+      straddling[c] = !mc.surely_outside[c] && outside(cell) && straddles(mc, samples, cell);
     }
   }, 1 << 14);
   auto joins = [&](int node) { return node >= 0 && straddling[node]; };
@@ -151,7 +151,7 @@ void fill_sheet_holes(MedialComplex& mc, const Samples& samples, std::vector<std
   for (const Found& found : half)
     for (const auto& [x, y] : found.sides) parent[find_root(parent, x)] = find_root(parent, y);
   // Per group (its root): the selected facets with an outside corner; a facet with corners in two
-  // groups spoils both. A selected facet that was not built has a corner far outside, which is in
+  // groups spoils both. A selected facet that was not built has a corner surely outside, which is in
   // no group: it spoils the groups at its other corners. (Without this, a group on brlcad's c.stp
   // was filled at 20k samples and left a vertex outside the solid.)
   std::vector<std::pair<int, int>> group_face;
@@ -690,7 +690,7 @@ std::vector<std::uint8_t> label_inside(MedialComplex& mc, const Samples& samples
                  for (int node : mc.points) used_upper[node] = 2;
                  for (const auto& sg : mc.segments)
                    for (int k = 0; k < 2; ++k) used_upper[sg[k]] = std::max<char>(used_upper[sg[k]], sg[2] ? 1 : 2);
-                 // The facets not built (a corner far outside) count at their other corners too.
+                 // The facets not built (a corner surely outside) count at their other corners too.
                  for (size_t id = 0; id < mc.unbuilt_use.size(); ++id) {
                    if (!mc.unbuilt_use[id]) continue;
                    const int r = mc.rep.empty() ? static_cast<int>(id) : mc.rep[id];

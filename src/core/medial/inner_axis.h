@@ -9,10 +9,18 @@
 #include "../progress.h"
 #include "../sampling/samples.h"
 #include "delaunay_3.h"
+#include "geometry_3.h"
 #include "medial_axis.h"
 #include "reconstruct_faces.h"
 
 namespace cadmedial::internal {
+
+/// The distance within which coincident_cells merges two neighbours' centres: 1e-9 of the
+/// samples' box diagonal.
+inline double coincident_eps(const std::vector<Point3>& points) {
+  const auto [lo, hi] = bounding_box(points);
+  return 1e-9 * norm(sub(hi, lo));
+}
 
 /// Per cell id of mc, the cell it merges into: the first of the cells joined to it through
 /// neighbours with the same circumcentre (exactly cospherical samples, or the same doubles), or

@@ -56,15 +56,20 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
   const Selection& sel = *selection;
   {
     // The circumcentres, and which lie far outside (the selection builds no facet at those), half
-    // the cells on each core.
+    // the cells on each core; once the flat cells' centres are settled, those the votes put
+    // outside.
     const auto [lo, hi] = bounding_box(samples.points);
     on_two_halves(mc.num_cells(), [&](int, std::size_t begin, std::size_t end) {
       cell_centers(samples.points, mc, begin, end);
       mark_far_outside(samples, lo, hi, mc, begin, end);
     });
+    settle_flat_cells(samples.points, mc);
+    const double eps = coincident_eps(samples.points);
+    on_two_halves(mc.num_cells(), [&](int, std::size_t begin, std::size_t end) {
+      mark_voted_outside(samples, eps, mc, begin, end);
+    });
   }
   select_facets(sel, mc, st, progress, !params.plain_medial);
-  settle_flat_cells(samples.points, mc);
   st.timings.push_back({"selection", seconds_since(t0)});
 
   t0 = Clock::now();
@@ -77,8 +82,7 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
         complete_corners(dt, handle, samples, sel, mc, st);
       },
       [&](const std::atomic<bool>&) {
-        const auto [lo, hi] = bounding_box(samples.points);
-        rep = coincident_cells(mc, samples.points, 1e-9 * norm(sub(hi, lo)));
+        rep = coincident_cells(mc, samples.points, coincident_eps(samples.points));
       });
   if (!params.plain_medial) star_cells(mc, samples.size());
   st.timings.push_back({"completion", seconds_since(t0)});

@@ -23,14 +23,14 @@ using InsideTest = std::function<std::vector<std::uint8_t>(const std::vector<Poi
 struct MedialAxisStats {
   Timings timings;                   ///< delaunay, selection, completion, inner
   /// Voronoi facets passing Angle or Ratio (before separation), but for those whose vertices all
-  /// lie far outside (mark_far_outside)
+  /// lie surely outside (mark_far_outside, mark_voted_outside)
   std::size_t selected_facets = 0;
   std::size_t edge_triangles = 0;
   std::size_t corner_triangles = 0;
   std::size_t fan_triangles = 0;     ///< cones closing breaks in a completed sample's rim
   std::size_t exact_inside_tests = 0;
   /// selected facets built and not kept: outside the solid or in stray pieces (those with a vertex
-  /// far outside are not built)
+  /// surely outside are not built)
   std::size_t dropped_faces = 0;
   std::size_t components = 0;        ///< pieces of the inner axis before stray ones are dropped
   std::size_t filler_faces = 0;      ///< unselected Voronoi facets kept for the topology

@@ -50,7 +50,27 @@ void mark_far_outside(const Samples& samples, const Point3& lo, const Point3& hi
   const double diag = norm(sub(hi, lo)), margin = 1e-6 * diag;
   for (std::size_t id = begin; id < end; ++id) {
     const bool far = beyond_box(mc.centers[id], mc.radii[id], lo, hi, diag, margin);
-    mc.far_outside[id] = far && !mc.flat[id] && !straddles(mc, samples, static_cast<int>(id));
+    mc.surely_outside[id] = far && !mc.flat[id] && !straddles(mc, samples, static_cast<int>(id));
+  }
+}
+
+void mark_voted_outside(const Samples& samples, double eps, MedialComplex& mc, std::size_t begin, std::size_t end) {
+  for (std::size_t id = begin; id < end; ++id) {
+    if (mc.surely_outside[id] || mc.flat[id]) continue;
+    const Point3& x = mc.centers[id];
+    // A cell that merges with a neighbour (coincident_cells: centres within eps) is labelled
+    // through its group's representative, at the group's centre: left to label_inside.
+    bool merges = false;
+    for (int nb : mc.cell_neighbors[id])
+      if (nb >= 0) merges = merges || mc.centers[nb] == x || norm(sub(mc.centers[nb], x)) <= eps;
+    if (merges) continue;
+    int in = 0, out = 0;
+    for (int s : mc.cell_samples[id]) {
+      const int v = vote(samples, s, x);
+      in += v > 0, out += v < 0;
+    }
+    // label_inside's rule for "outside" without asking further.
+    mc.surely_outside[id] = out >= 1 && in == 0;
   }
 }
 

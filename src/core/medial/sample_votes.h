@@ -1,5 +1,5 @@
 // Internal to medial/: which side of the boundary a Voronoi vertex lies on, as its cell's samples
-// see it (their tangent planes), and the vertices far outside that no later step can bring in.
+// see it (their tangent planes), and the vertices surely outside that no later step can bring in.
 #pragma once
 
 #include <cstddef>
@@ -25,12 +25,20 @@ inline bool beyond_box(const Point3& x, double r, const Point3& lo, const Point3
 /// Whether the cell's Voronoi vertex has both an inside and an outside vote among its samples.
 bool straddles(const MedialComplex& mc, const Samples& samples, int cell);
 
-/// Sets mc.far_outside for the cells with ids in [begin, end) (their centres and flat flags set):
+/// Sets mc.surely_outside for the cells with ids in [begin, end) (their centres and flat flags set):
 /// 1 where the Voronoi vertex lies beyond the samples' box [lo, hi] or its ball is larger than the
 /// box's diagonal, by a margin, and neither settle_flat_cells (flat cells) nor fill_sheet_holes
 /// (straddling ones) can move it. label_inside calls such a vertex outside, whatever else holds,
 /// so select_facets need not build the facets at it.
 void mark_far_outside(const Samples& samples, const Point3& lo, const Point3& hi, MedialComplex& mc,
                       std::size_t begin, std::size_t end);
+
+/// Sets mc.surely_outside too for the cells with ids in [begin, end) that label_inside calls
+/// outside from their samples' votes alone (an outside vote and no inside one) and that merge
+/// with no neighbour (centres farther apart than coincident_cells' eps), once their centres are
+/// final (settle_flat_cells). Nothing after the labelling brings such a vertex in (fill_sheet_holes
+/// moves only vertices with both votes), so its facets would be dropped: on the Y-rod mount at
+/// 10k samples, 48,034 of the 105,258 selected facets built.
+void mark_voted_outside(const Samples& samples, double eps, MedialComplex& mc, std::size_t begin, std::size_t end);
 
 }  // namespace cadmedial::internal

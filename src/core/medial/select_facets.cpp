@@ -185,14 +185,15 @@ struct Facets {
 // A cell of the other thread's, in a thread's array of walked edges (edge bits are 1 to 32).
 constexpr std::uint8_t kOthers = 0x80;
 
-// The facets of the edges whose first cell (the smallest id around the edge, of those not far
+// The facets of the edges whose first cell (the smallest id around the edge, of those not surely
 // outside) is one of this thread's, visited in the order of their first cells. `done` is this
 // thread's own: the other thread's cells are marked kOthers in it. A walk around an edge marks the
 // edge in every cell on the way; an edge found from one of our cells whose walk meets an earlier
-// cell (one of the other thread's) is theirs. No walk starts at a cell far outside, and a facet
+// cell (one of the other thread's) is theirs. No walk starts at a cell surely outside, and a facet
 // with such a corner is not built: its other corners are marked in unbuilt_use. (Most cells are
 // far outside on parts with large gently curved faces: 2.4 of 2.8 million on tail_turbine at
-// 106k samples.) `tick(c)` before each cell: false stops.
+// 106k samples; on the Y-rod mount about half the selected facets have a corner that the votes
+// put outside.) `tick(c)` before each cell: false stops.
 template <class Tick>
 Facets facets_of(const Selection& sel, const MedialComplex& mc, std::vector<std::uint8_t>& done, bool fillers,
                  const Tick& tick) {
@@ -211,7 +212,7 @@ Facets facets_of(const Selection& sel, const MedialComplex& mc, std::vector<std:
     if (ahead < static_cast<std::size_t>(nc) && !(done[ahead] & kOthers))
       for (const int nb : mc.cell_neighbors[ahead])
         if (nb >= 0) prefetch(mc.cell_samples[nb]), prefetch(mc.cell_neighbors[nb]);
-    if ((done[c] & kOthers) || mc.far_outside[c]) continue;
+    if ((done[c] & kOthers) || mc.surely_outside[c]) continue;
     for (const auto& [i, j] : kEdge) {
       if (done[c] & edge_bit(i, j)) continue;
       const int p = mc.cell_samples[c][i], q = mc.cell_samples[c][j];
@@ -220,13 +221,13 @@ Facets facets_of(const Selection& sel, const MedialComplex& mc, std::vector<std:
       // Around pq in CGAL's turning sense (its cell circulator); off the hull, back the other way
       // from c to mark the rest.
       face.clear();
-      bool bounded = true, first = true, far = false;
+      bool bounded = true, first = true, unbuilt = false;
       int cur = c, ci = i, cj = j;
       do {
         face.push_back(cur);
         done[cur] |= edge_bit(ci, cj);
-        far = far || mc.far_outside[cur];
-        first = first && (cur >= c || mc.far_outside[cur]);
+        unbuilt = unbuilt || mc.surely_outside[cur];
+        first = first && (cur >= c || mc.surely_outside[cur]);
         const int nb = mc.cell_neighbors[cur][Delaunay::next_around_edge(ci, cj)];
         if (nb < 0) {
           bounded = false;
@@ -239,13 +240,13 @@ Facets facets_of(const Selection& sel, const MedialComplex& mc, std::vector<std:
         for (int nb; (nb = mc.cell_neighbors[cur][Delaunay::next_around_edge(cj, ci)]) >= 0;) {
           cur = nb, ci = corner(nb, p), cj = corner(nb, q);
           done[cur] |= edge_bit(ci, cj);
-          first = first && (cur >= c || mc.far_outside[cur]);
+          first = first && (cur >= c || mc.surely_outside[cur]);
         }
       }
       if (!first) continue;
       out.selected += selected;
       if (!bounded || face.size() < 3) continue;
-      if (far) {
+      if (unbuilt) {
         for (int x : face) out.unbuilt_use[x] = std::max<std::uint8_t>(out.unbuilt_use[x], selected ? 2 : 1);
         continue;
       }

@@ -37,9 +37,9 @@ class Selection {
 Umbrellas umbrellas_from_poles(const Delaunay& dt, std::size_t n);
 
 /// The bounded Voronoi facets dual to selected Delaunay edges, added to mc; with `fillers`, those
-/// of the other edges too, marked as fillers. Facets with a corner far outside (mc.far_outside)
+/// of the other edges too, marked as fillers. Facets with a corner surely outside (mc.surely_outside)
 /// are not built; their other corners are marked in mc.unbuilt_use.
-/// Needs mc's cells numbered (number_cells) and far_outside set. Runs on two threads unless
+/// Needs mc's cells numbered (number_cells) and surely_outside set. Runs on two threads unless
 /// `threads` is 1 (the same faces in the same order); only the calling one reports progress.
 void select_facets(const Selection& sel, MedialComplex& mc, MedialAxisStats& st, const Progress& progress,
                    bool fillers, int threads = 2);

@@ -22,8 +22,8 @@ struct SolidStats {
   std::size_t concave_edges = 0;
   std::size_t smooth_edges = 0;
   std::size_t nonconcave_corners = 0;
-  /// selected faces outside the solid or in stray pieces, but for those with a vertex far outside
-  /// (beyond the samples' box), which are not built
+  /// selected faces outside the solid or in stray pieces, but for those with a vertex surely
+  /// outside (beyond the samples' box, or by its samples' votes alone), which are not built
   std::size_t dropped_faces = 0;
   std::size_t components = 0;      ///< pieces of the inner axis before stray ones were dropped
   std::size_t filler_faces = 0;    ///< unselected Voronoi facets kept for the axis's topology
