@@ -82,14 +82,17 @@ TEST(FarOutside, MarkedVerticesLieOutsideACylinder) {
   expect_outside(cylinder, far_cells(cylinder, 20000));
 }
 
-TEST(FarOutside, MarkedVerticesLieOutsideNistFtc11) {
+// NIST FTC 11's marked vertices against its solid (by the votes, or far outside).
+void expect_outside_ftc11(bool by_votes, std::size_t probes) {
   const std::string path = model_path("nist/nist_ftc_11_asme1_rb.stp");
   if (path.empty()) GTEST_SKIP() << "../shared/data/models is not here";
   const TopoDS_Shape shape = read_shape_file(path);
   const std::vector<TopoDS_Solid> solids = extract_solids(shape);
   ASSERT_EQ(solids.size(), 1u);
-  expect_outside(solids.front(), far_cells(shape, 20000));
+  expect_outside(solids.front(), far_cells(shape, 20000, by_votes), probes);
 }
+
+TEST(FarOutside, MarkedVerticesLieOutsideNistFtc11) { expect_outside_ftc11(false, 2000); }
 
 // Marked by their votes: most of the outer axis near the surface, and none inside (up to 20,000
 // of them checked, most of those marked here; marking every vertex with at most one inside vote
@@ -110,14 +113,7 @@ TEST(VotedOutside, MarkedVerticesLieOutsideAPocketBlock) {
   expect_outside(block, far_cells(block, 20000, true), 20000);
 }
 
-TEST(VotedOutside, MarkedVerticesLieOutsideNistFtc11) {
-  const std::string path = model_path("nist/nist_ftc_11_asme1_rb.stp");
-  if (path.empty()) GTEST_SKIP() << "../shared/data/models is not here";
-  const TopoDS_Shape shape = read_shape_file(path);
-  const std::vector<TopoDS_Solid> solids = extract_solids(shape);
-  ASSERT_EQ(solids.size(), 1u);
-  expect_outside(solids.front(), far_cells(shape, 20000, true), 20000);
-}
+TEST(VotedOutside, MarkedVerticesLieOutsideNistFtc11) { expect_outside_ftc11(true, 20000); }
 
 }  // namespace
 }  // namespace cadmedial::test
