@@ -713,11 +713,9 @@ std::vector<std::uint8_t> label_inside(MedialComplex& mc, const Samples& samples
         in += v > 0;
         out += v < 0;
       }
-      // Inside needs two agreeing votes: a wrong "inside" leaves a vertex out in the open.
-      if (in >= 2 && out == 0)
-        label[id] = 1;
-      else if (out >= 1 && in == 0)
-        label[id] = 0;
+      const int settled = votes_settle(in, out);
+      if (settled >= 0)
+        label[id] = static_cast<std::uint8_t>(settled);
       else
         unsure.push_back(static_cast<int>(id));
     }

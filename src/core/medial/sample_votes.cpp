@@ -69,8 +69,7 @@ void mark_voted_outside(const Samples& samples, double eps, MedialComplex& mc, s
       const int v = vote(samples, s, x);
       in += v > 0, out += v < 0;
     }
-    // label_inside's rule for "outside" without asking further.
-    mc.surely_outside[id] = out >= 1 && in == 0;
+    mc.surely_outside[id] = votes_settle(in, out) == 0;
   }
 }
 

@@ -13,6 +13,11 @@ namespace cadmedial::internal {
 /// Sample s's vote on point x: 1 inside, -1 outside, 0 none (see the definition).
 int vote(const Samples& samples, int s, const Point3& x);
 
+/// What a Voronoi vertex's `in` inside and `out` outside votes settle: 1 inside (two agreeing: a
+/// wrong "inside" leaves a vertex out in the open), 0 outside (one, and none inside), -1 in doubt.
+/// label_inside's rule, which mark_voted_outside anticipates.
+inline int votes_settle(int in, int out) { return in >= 2 && out == 0 ? 1 : out >= 1 && in == 0 ? 0 : -1; }
+
 /// Whether a Voronoi vertex at x, with ball radius r, lies beyond the samples' box [lo, hi] (of
 /// diagonal `diag`) by more than `margin` or has a ball larger than diag + margin. Written so that
 /// a NaN centre or radius counts as beyond: GMP aborts on NaN in CGAL's exact fallback.
