@@ -1,6 +1,8 @@
 #include "medial_axis.h"
 
+#include <atomic>
 #include <chrono>
+#include <future>
 #include <optional>
 
 #include "../errors.h"
@@ -29,11 +31,35 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 namespace {
 
+// Sets a flag however the scope is left, for a thread that polls it.
+struct SetOnExit {
+  std::atomic<bool>& flag;
+  ~SetOnExit() { flag = true; }
+};
+
+// `pending`, when the umbrellas are still being made on another thread: the selection's tables,
+// which need only them and the samples, are then built by a thread of their own as soon as they
+// come, while CGAL triangulates (the worker's jobs end before the triangulation does: 0.08 s
+// before at "10k", bench/README.md).
 MedialMesh medial_axis_after(const Samples& samples, const std::function<const Umbrellas&()>& wait_for_umbrellas,
-                             const MedialParams& params, const InsideTest& inside, int solid_index,
-                             MedialAxisStats* stats_out, const Progress& progress,
-                             const std::atomic<bool>* give_up) {
+                             const std::shared_future<Umbrellas>* pending, const MedialParams& params,
+                             const InsideTest& inside, int solid_index, MedialAxisStats* stats_out,
+                             const Progress& progress, const std::atomic<bool>* give_up) {
   MedialAxisStats st;
+  std::optional<const Selection> selection;
+  std::future<void> tables;
+  std::atomic<bool> leaving{false};
+  if (pending && !params.plain_medial) {
+    tables = std::async(std::launch::async, [&selection, &samples, &params, &leaving, mine = *pending] {
+      // Polled, so that a cancel or an error here does not wait for the reconstruction.
+      while (mine.wait_for(std::chrono::milliseconds(1)) != std::future_status::ready)
+        if (leaving) return;
+      const Umbrellas& u = mine.get();  // a failure is rethrown by tables.get()
+      // Empty when the worker found the samples must change (give_up follows).
+      if (!leaving && u.start.size() == samples.size() + 1) selection.emplace(samples, u, params);
+    });
+  }
+  const SetOnExit leave{leaving};  // destroyed before `tables`, whose destructor waits
   auto t0 = Clock::now();
   Delaunay dt;
   std::vector<Vertex> handle;
@@ -41,18 +67,22 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
   triangulate(samples, dt, handle, rank, progress, "delaunay", give_up);
   st.timings.push_back({"delaunay", seconds_since(t0)});
   report(progress, "selection", 0.0);
+  if (tables.valid()) tables.get();  // after the umbrellas: they are ready now, or failed
   const Umbrellas& umbrellas = wait_for_umbrellas();
   if (give_up && give_up->load()) throw Cancelled();
 
   t0 = Clock::now();
   const Umbrellas pole_umbrellas = params.plain_medial ? umbrellas_from_poles(dt, samples.size()) : Umbrellas();
-  // The selection's tables of the umbrellas on the second core while the cells are numbered.
-  std::optional<const Selection> selection;
   MedialComplex mc;
-  on_two_cores([&] { number_cells(dt, rank, mc); },
-               [&](const std::atomic<bool>&) {
-                 selection.emplace(samples, params.plain_medial ? pole_umbrellas : umbrellas, params);
-               });
+  if (selection) {
+    number_cells(dt, rank, mc);
+  } else {
+    // The selection's tables on the second core while the cells are numbered.
+    on_two_cores([&] { number_cells(dt, rank, mc); },
+                 [&](const std::atomic<bool>&) {
+                   selection.emplace(samples, params.plain_medial ? pole_umbrellas : umbrellas, params);
+                 });
+  }
   const Selection& sel = *selection;
   {
     // The circumcentres, and which lie far outside (the selection builds no facet at those), half
@@ -111,15 +141,15 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
 
 MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const MedialParams& params,
                        const InsideTest& inside, int solid_index, MedialAxisStats* stats, const Progress& progress) {
-  return medial_axis_after(samples, [&]() -> const Umbrellas& { return umbrellas; }, params, inside, solid_index,
-                           stats, progress, nullptr);
+  return medial_axis_after(samples, [&]() -> const Umbrellas& { return umbrellas; }, nullptr, params, inside,
+                           solid_index, stats, progress, nullptr);
 }
 
 MedialMesh medial_axis(const Samples& samples, std::shared_future<Umbrellas> umbrellas, const MedialParams& params,
                        const InsideTest& inside, int solid_index, MedialAxisStats* stats, const Progress& progress,
                        const std::atomic<bool>* give_up) {
-  return medial_axis_after(samples, [&]() -> const Umbrellas& { return umbrellas.get(); }, params, inside,
-                           solid_index, stats, progress, give_up);
+  return medial_axis_after(samples, [&]() -> const Umbrellas& { return umbrellas.get(); }, &umbrellas, params,
+                           inside, solid_index, stats, progress, give_up);
 }
 
 double bare_delaunay_seconds(const std::vector<Point3>& points) {
