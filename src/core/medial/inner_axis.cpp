@@ -553,21 +553,29 @@ std::vector<int> coincident_cells(const MedialComplex& mc, const std::vector<Poi
     int a, b;
     bool within_eps;
   };
-  std::vector<Close> close;  // neighbours within `isolation`, each pair once
-  for (size_t id = 0; id < n; ++id) {
-    if (id + kPrefetchAhead < n)
-      for (const int b : mc.cell_neighbors[id + kPrefetchAhead])
-        if (b > static_cast<int>(id + kPrefetchAhead)) prefetch(mc.centers[b]);
-    const int a = static_cast<int>(id);
-    for (int b : mc.cell_neighbors[id]) {
-      if (b < a) continue;  // also the infinite side (-1)
-      const Point3 &ca = mc.centers[a], &cb = mc.centers[b];
-      const double d = ca == cb ? 0.0 : norm(sub(ca, cb));
-      if (!(d <= isolation)) continue;  // also for the NaN centre of a flat cell
-      close.push_back({a, b, d <= eps});
-      if (d <= eps) join(near, a, b);
+  // Neighbours within `isolation`, each pair once, in id order: half the cells on each core (the
+  // pass over every cell's neighbours was this function's time, 0.08 s at 250k samples), then
+  // joined here. The groups and their roots (smallest ids) do not depend on the order of joins.
+  std::vector<Close> close, close_upper;
+  on_two_halves(n, [&](int part, std::size_t begin, std::size_t end) {
+    std::vector<Close>& found = part ? close_upper : close;
+    for (size_t id = begin; id < end; ++id) {
+      if (id + kPrefetchAhead < end)
+        for (const int b : mc.cell_neighbors[id + kPrefetchAhead])
+          if (b > static_cast<int>(id + kPrefetchAhead)) prefetch(mc.centers[b]);
+      const int a = static_cast<int>(id);
+      for (int b : mc.cell_neighbors[id]) {
+        if (b < a) continue;  // also the infinite side (-1)
+        const Point3 &ca = mc.centers[a], &cb = mc.centers[b];
+        const double d = ca == cb ? 0.0 : norm(sub(ca, cb));
+        if (!(d <= isolation)) continue;  // also for the NaN centre of a flat cell
+        found.push_back({a, b, d <= eps});
+      }
     }
-  }
+  }, 1 << 14);
+  close.insert(close.end(), close_upper.begin(), close_upper.end());
+  for (const Close& c : close)
+    if (c.within_eps) join(near, c.a, c.b);
   // A group joined through centres within eps keeps together only if no neighbour outside it lies
   // within `isolation`; otherwise its cells fall back to their exact groups. The exact predicate
   // runs only there: on every close pair it doubled the completion stage, where this runs beside
