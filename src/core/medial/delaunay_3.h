@@ -94,6 +94,11 @@ struct MedialComplex {
   /// per cell id: 1 for a Voronoi vertex surely outside, far off (mark_far_outside) or by its
   /// samples' votes (mark_voted_outside): the facets at it are not built
   CellArray<std::uint8_t> surely_outside;
+  /// per cell id: votes_settle of its samples' votes at its centre where mark_voted_outside
+  /// counted them (the centre is final there: the cell merges with no neighbour), else kNotVoted;
+  /// label_inside reads it rather than count them again
+  CellArray<std::int8_t> voted;
+  static constexpr std::int8_t kNotVoted = -2;
   /// per cell id: 2 if a facet not built (surely_outside) that was selected has it as a corner, 1 if
   /// only unselected ones do, else 0 (what label_inside would have read from those facets)
   std::vector<std::uint8_t> unbuilt_use;

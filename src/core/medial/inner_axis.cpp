@@ -708,6 +708,8 @@ std::vector<std::uint8_t> label_inside(MedialComplex& mc, const Samples& samples
   // The samples' votes, half the cells on each core; the cells they leave in doubt in id order.
   const auto [lo, hi] = bounding_box(samples.points);
   const double diag = norm(sub(hi, lo));
+  // Where mark_voted_outside counted a cell's votes, at the centre it still has, they are read.
+  const bool voted = mc.voted.size() == n;
   auto votes = [&](std::size_t begin, std::size_t end, std::vector<int>& unsure, auto&& tick) {
     for (size_t id = begin; id < end; ++id) {
       if (!tick(id)) return;
@@ -715,13 +717,16 @@ std::vector<std::uint8_t> label_inside(MedialComplex& mc, const Samples& samples
       if (!used[id]) continue;
       const Point3& x = mc.centers[id];
       if (beyond_box(x, mc.radii[id], lo, hi, diag, 0.0)) continue;  // label 0
-      int in = 0, out = 0;
-      for (int j = 0; j < 4; ++j) {
-        const int v = vote(samples, mc.cell_samples[id][j], x);
-        in += v > 0;
-        out += v < 0;
+      int settled = voted ? mc.voted[id] : MedialComplex::kNotVoted;
+      if (settled == MedialComplex::kNotVoted) {
+        int in = 0, out = 0;
+        for (int j = 0; j < 4; ++j) {
+          const int v = vote(samples, mc.cell_samples[id][j], x);
+          in += v > 0;
+          out += v < 0;
+        }
+        settled = votes_settle(in, out);
       }
-      const int settled = votes_settle(in, out);
       if (settled >= 0)
         label[id] = static_cast<std::uint8_t>(settled);
       else

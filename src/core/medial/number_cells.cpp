@@ -80,6 +80,7 @@ void number_cells(const Delaunay& dt, const std::vector<int>& rank, MedialComple
   mc.radii.resize(nc);
   mc.flat.resize(nc);
   mc.surely_outside.resize(nc);
+  mc.voted.resize(nc);
   // Half the cells each on two cores: the reads wander over CGAL's cells.
   on_two_halves(nc, [&](int, std::size_t begin, std::size_t end) { fill_cells(cells, mc, begin, end); });
 }

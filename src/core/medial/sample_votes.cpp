@@ -51,6 +51,7 @@ void mark_far_outside(const Samples& samples, const Point3& lo, const Point3& hi
   for (std::size_t id = begin; id < end; ++id) {
     const bool far = beyond_box(mc.centers[id], mc.radii[id], lo, hi, diag, margin);
     mc.surely_outside[id] = far && !mc.flat[id] && !straddles(mc, samples, static_cast<int>(id));
+    mc.voted[id] = MedialComplex::kNotVoted;
   }
 }
 
@@ -69,7 +70,9 @@ void mark_voted_outside(const Samples& samples, double eps, MedialComplex& mc, s
       const int v = vote(samples, s, x);
       in += v > 0, out += v < 0;
     }
-    mc.surely_outside[id] = votes_settle(in, out) == 0;
+    const int settled = votes_settle(in, out);
+    mc.voted[id] = static_cast<std::int8_t>(settled);
+    mc.surely_outside[id] = settled == 0;
   }
 }
 
