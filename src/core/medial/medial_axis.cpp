@@ -46,13 +46,16 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
                              const InsideTest& inside, int solid_index, MedialAxisStats* stats_out,
                              const Progress& progress, const std::atomic<bool>* give_up) {
   MedialAxisStats st;
+  // In this order: `tables`' destructor waits for the task, which reads `leaving` until then.
   std::optional<const Selection> selection;
-  std::future<void> tables;
   std::atomic<bool> leaving{false};
-  if (pending && !params.plain_medial) {
+  std::future<void> tables;
+  // A deferred future would never become ready here: its umbrellas are made by get(), below.
+  if (pending && !params.plain_medial &&
+      pending->wait_for(std::chrono::seconds(0)) != std::future_status::deferred) {
     tables = std::async(std::launch::async, [&selection, &samples, &params, &leaving, mine = *pending] {
       // Polled, so that a cancel or an error here does not wait for the reconstruction.
-      while (mine.wait_for(std::chrono::milliseconds(1)) != std::future_status::ready)
+      while (mine.wait_for(std::chrono::milliseconds(1)) == std::future_status::timeout)
         if (leaving) return;
       const Umbrellas& u = mine.get();  // a failure is rethrown by tables.get()
       // Empty when the worker found the samples must change (give_up follows).

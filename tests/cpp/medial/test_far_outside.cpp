@@ -115,5 +115,52 @@ TEST(VotedOutside, MarkedVerticesLieOutsideAPocketBlock) {
 
 TEST(VotedOutside, MarkedVerticesLieOutsideNistFtc11) { expect_outside_ftc11(true, 20000); }
 
+// label_inside reads the votes mark_voted_outside counted (mc.voted) instead of counting them
+// again. That is right only while no cell they were counted for merges (coincident_cells), so
+// that its centre is still where they were counted: mark_voted_outside's rule for leaving a cell
+// out must match coincident_cells' rule for joining it.
+void expect_counted_votes_hold(const TopoDS_Shape& shape, int target_samples) {
+  SamplingParams params;
+  params.target_samples = target_samples;
+  const Samples samples = sample_shape(shape, params).front();
+  Delaunay dt;
+  std::vector<Vertex> handle;
+  std::vector<int> rank;
+  triangulate(samples, dt, handle, rank, {}, "delaunay");
+  MedialComplex mc;
+  number_cells(dt, rank, mc);
+  const auto [lo, hi] = bounding_box(samples.points);
+  cell_centers(samples.points, mc, 0, mc.num_cells());
+  mark_far_outside(samples, lo, hi, mc, 0, mc.num_cells());
+  settle_flat_cells(samples.points, mc);
+  const double eps = coincident_eps(samples.points);
+  mark_voted_outside(samples, eps, mc, 0, mc.num_cells());
+  const std::vector<int> rep = coincident_cells(mc, samples.points, eps);
+  std::vector<int> members(mc.num_cells(), 0);
+  for (int r : rep) ++members[r];
+  merge_coincident_cells(mc, rep, {});
+  std::size_t counted = 0, groups = 0, wrong = 0;
+  for (std::size_t c = 0; c < mc.num_cells(); ++c) {
+    groups += members[c] > 1;
+    if (mc.voted[c] == MedialComplex::kNotVoted) continue;
+    ++counted;
+    int in = 0, out = 0;
+    for (int s : mc.cell_samples[c]) {
+      const int v = vote(samples, s, mc.centers[c]);
+      in += v > 0, out += v < 0;
+    }
+    wrong += rep[c] != static_cast<int>(c) || members[c] != 1 || votes_settle(in, out) != mc.voted[c];
+  }
+  EXPECT_GT(counted, mc.num_cells() / 4) << "of " << mc.num_cells() << " cells";
+  EXPECT_GT(groups, 0u) << "no cells merge: the check says nothing";
+  EXPECT_EQ(wrong, 0u) << "of " << counted << " cells whose votes were counted";
+}
+
+// A box's samples are cospherical in many groups (exact merges); a torus's tube circles only to
+// rounding (merges within eps).
+TEST(VotedOutside, CountedVotesHoldAfterTheMergeOnABox) { expect_counted_votes_hold(make_box(10, 7, 4), 20000); }
+
+TEST(VotedOutside, CountedVotesHoldAfterTheMergeOnATorus) { expect_counted_votes_hold(make_torus(5, 1.5), 20000); }
+
 }  // namespace
 }  // namespace cadmedial::test
