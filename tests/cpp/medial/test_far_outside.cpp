@@ -32,22 +32,37 @@ struct FarCells {
   Point3 lo{}, hi{};
 };
 
-// The cells marked far outside, or with `by_votes` those that only the votes mark.
-FarCells far_cells(const TopoDS_Shape& shape, int target_samples, bool by_votes = false) {
+// A shape's samples, their triangulation and its cells, numbered, with their centres and the
+// far ones marked, as the pipeline has them before the selection.
+struct Cells {
+  Samples samples;
+  Delaunay dt;
+  MedialComplex mc;
+  Point3 lo{}, hi{};
+};
+
+void make_cells(const TopoDS_Shape& shape, int target_samples, Cells& c) {
   SamplingParams params;
   params.target_samples = target_samples;
-  const Samples samples = sample_shape(shape, params).front();
-  Delaunay dt;
+  c.samples = sample_shape(shape, params).front();
   std::vector<Vertex> handle;
   std::vector<int> rank;
-  triangulate(samples, dt, handle, rank, {}, "delaunay");
-  MedialComplex mc;
-  number_cells(dt, rank, mc);
+  triangulate(c.samples, c.dt, handle, rank, {}, "delaunay");
+  number_cells(c.dt, rank, c.mc);
+  std::tie(c.lo, c.hi) = bounding_box(c.samples.points);
+  cell_centers(c.samples.points, c.mc, 0, c.mc.num_cells());
+  mark_far_outside(c.samples, c.lo, c.hi, c.mc, 0, c.mc.num_cells());
+}
+
+// The cells marked far outside, or with `by_votes` those that only the votes mark.
+FarCells far_cells(const TopoDS_Shape& shape, int target_samples, bool by_votes = false) {
+  Cells cells;
+  make_cells(shape, target_samples, cells);
+  const Samples& samples = cells.samples;
+  MedialComplex& mc = cells.mc;
   FarCells out;
   out.cells = mc.num_cells();
-  std::tie(out.lo, out.hi) = bounding_box(samples.points);
-  cell_centers(samples.points, mc, 0, mc.num_cells());
-  mark_far_outside(samples, out.lo, out.hi, mc, 0, mc.num_cells());
+  out.lo = cells.lo, out.hi = cells.hi;
   const std::vector<std::uint8_t> far(mc.surely_outside.begin(), mc.surely_outside.end());
   if (by_votes) {
     settle_flat_cells(samples.points, mc);
@@ -120,18 +135,10 @@ TEST(VotedOutside, MarkedVerticesLieOutsideNistFtc11) { expect_outside_ftc11(tru
 // that its centre is still where they were counted: mark_voted_outside's rule for leaving a cell
 // out must match coincident_cells' rule for joining it.
 void expect_counted_votes_hold(const TopoDS_Shape& shape, int target_samples) {
-  SamplingParams params;
-  params.target_samples = target_samples;
-  const Samples samples = sample_shape(shape, params).front();
-  Delaunay dt;
-  std::vector<Vertex> handle;
-  std::vector<int> rank;
-  triangulate(samples, dt, handle, rank, {}, "delaunay");
-  MedialComplex mc;
-  number_cells(dt, rank, mc);
-  const auto [lo, hi] = bounding_box(samples.points);
-  cell_centers(samples.points, mc, 0, mc.num_cells());
-  mark_far_outside(samples, lo, hi, mc, 0, mc.num_cells());
+  Cells cells;
+  make_cells(shape, target_samples, cells);
+  const Samples& samples = cells.samples;
+  MedialComplex& mc = cells.mc;
   settle_flat_cells(samples.points, mc);
   const double eps = coincident_eps(samples.points);
   mark_voted_outside(samples, eps, mc, 0, mc.num_cells());
