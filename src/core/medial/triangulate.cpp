@@ -16,7 +16,8 @@ void triangulate(const Samples& samples, Delaunay& dt, std::vector<Vertex>& hand
   // insert does, but keeping each sample's index beside its point (sorting indices into the
   // points instead was a fifth slower, and the insertion then read the points out of order).
   // The Hilbert curve splits boxes at their middle, not at the points' median (CGAL's default):
-  // sort and insertion 3 to 10 % faster on the Y-rod mount's samples (bench/README.md).
+  // sort and insertion 3 to 13 % faster on the Y-rod mount's samples, 3 % slower on NIST FTC
+  // 11's (bench/README.md, 2026-12-04).
   using Item = std::pair<K::Point_3, int>;
   std::vector<Item> order;
   order.reserve(samples.size());
