@@ -52,7 +52,12 @@ MedialMesh medial_axis(const Samples& samples, std::shared_future<Umbrellas> umb
                        const InsideTest& inside, int solid_index, MedialAxisStats* stats = nullptr,
                        const Progress& progress = {}, const std::atomic<bool>* give_up = nullptr);
 
-/// Seconds for CGAL's Delaunay triangulation of these points alone (the benchmark's yardstick).
-double bare_delaunay_seconds(const std::vector<Point3>& points);
+/// How bare_delaunay_seconds orders the points: as CGAL's range constructor does (its spatial
+/// sort, Hilbert curve with the median policy), or with the middle policy, as the pipeline does.
+enum class BareOrder { CgalDefault, MiddlePolicy };
+
+/// Seconds for CGAL's Delaunay triangulation of these points alone (the benchmark's yardstick),
+/// the spatial sort included.
+double bare_delaunay_seconds(const std::vector<Point3>& points, BareOrder order = BareOrder::CgalDefault);
 
 }  // namespace cadmedial
