@@ -8,6 +8,12 @@
 
 namespace cadmedial::internal {
 
+/// Sets a flag however the scope is left (a return, an exception), for a thread that polls it.
+struct SetOnExit {
+  std::atomic<bool>& flag;
+  ~SetOnExit() { flag = true; }
+};
+
 /// Runs `second(stop)` on a new thread while `first()` runs on this one, and returns when both are
 /// done. Only `first` may report progress: the callback may call into Python and hold its lock.
 /// When `first` throws (a cancel, an error), `stop` is set so that `second`, which should poll it,

@@ -32,12 +32,6 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 namespace {
 
-// Sets a flag however the scope is left, for a thread that polls it.
-struct SetOnExit {
-  std::atomic<bool>& flag;
-  ~SetOnExit() { flag = true; }
-};
-
 // `pending`, when the umbrellas are still being made on another thread: the selection's tables,
 // which need only them and the samples, are then built by a thread of their own as soon as they
 // come, while CGAL triangulates (the worker's jobs end before the triangulation does: 0.08 s
@@ -173,7 +167,7 @@ double bare_delaunay_seconds(const std::vector<Point3>& points, BareOrder order)
     vertices = dt.number_of_vertices();
   } else {
     // What the range insert does, with the other policy: each point located from the last one.
-    CGAL::spatial_sort(pts.begin(), pts.end(), K(), CGAL::Hilbert_sort_middle_policy());
+    CGAL::spatial_sort(pts.begin(), pts.end(), K(), SpatialSortPolicy());
     Bare dt;
     Bare::Vertex_handle hint;
     for (const K::Point_3& p : pts) hint = dt.insert(p, hint == Bare::Vertex_handle() ? Bare::Cell_handle() : hint->cell());

@@ -15,9 +15,7 @@ void triangulate(const Samples& samples, Delaunay& dt, std::vector<Vertex>& hand
   // CGAL's spatial sort (Hilbert curve over a BRIO shuffle with its own fixed seed), as its range
   // insert does, but keeping each sample's index beside its point (sorting indices into the
   // points instead was a fifth slower, and the insertion then read the points out of order).
-  // The Hilbert curve splits boxes at their middle, not at the points' median (CGAL's default):
-  // sort and insertion 3 to 13 % faster on the Y-rod mount's samples, 3 % slower on NIST FTC
-  // 11's (bench/README.md, 2026-12-04).
+  // With SpatialSortPolicy (delaunay_3.h): 3 % slower on NIST FTC 11's samples, faster on most.
   using Item = std::pair<K::Point_3, int>;
   std::vector<Item> order;
   order.reserve(samples.size());
@@ -26,7 +24,7 @@ void triangulate(const Samples& samples, Delaunay& dt, std::vector<Vertex>& hand
     order.emplace_back(K::Point_3(p[0], p[1], p[2]), static_cast<int>(i));
   }
   using Traits = CGAL::Spatial_sort_traits_adapter_3<K, CGAL::First_of_pair_property_map<Item>>;
-  CGAL::spatial_sort(order.begin(), order.end(), Traits(), CGAL::Hilbert_sort_middle_policy());
+  CGAL::spatial_sort(order.begin(), order.end(), Traits(), SpatialSortPolicy());
   Vertex hint;
   std::size_t done = 0;
   for (const auto& [point, i] : order) {

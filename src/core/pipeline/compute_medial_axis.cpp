@@ -40,12 +40,6 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 constexpr double kMaxSamples = 1.0e7;
 constexpr double kMinSamples = 100;
 
-// Sets a flag however the scope is left (a return, an exception), for a thread that polls it.
-struct SetOnExit {
-  std::atomic<bool>& flag;
-  ~SetOnExit() { flag = true; }
-};
-
 struct Measure {
   std::vector<SolidMeasure> solids;
   double diag = 0;
@@ -428,7 +422,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       std::atomic<bool> planned{false};
       internal::on_two_cores(
           [&] {
-            const SetOnExit planned_on_exit{planned};
+            const internal::SetOnExit planned_on_exit{planned};
             t0 = Clock::now();
             report(progress, "features", 0.0);
             for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
@@ -577,7 +571,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
               thin = s.thin ? *s.thin
                             : thinnest_wall_near(s.samples, spacing, convex_face_pairs(f), s.first_thinnest, worker);
             });
-        const SetOnExit abandon_on_exit{abandoned};
+        const internal::SetOnExit abandon_on_exit{abandoned};
 
         const auto t_try = Clock::now();
         try {
