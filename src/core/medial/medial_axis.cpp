@@ -32,11 +32,11 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 namespace {
 
-// `pending`, when the umbrellas are still being made on another thread: the selection's tables,
-// which need only them and the samples, are then built by a thread of their own as soon as they
+// The umbrellas are `ready`, or `pending` on another thread: then the selection's tables,
+// which need only them and the samples, are built by a thread of their own as soon as they
 // come, while CGAL triangulates (the worker's jobs end before the triangulation does: 0.08 s
 // before at "10k", bench/README.md).
-MedialMesh medial_axis_after(const Samples& samples, const std::function<const Umbrellas&()>& wait_for_umbrellas,
+MedialMesh medial_axis_after(const Samples& samples, const Umbrellas* ready,
                              const std::shared_future<Umbrellas>* pending, const MedialParams& params,
                              const InsideTest& inside, int solid_index, MedialAxisStats* stats_out,
                              const Progress& progress, const std::atomic<bool>* give_up) {
@@ -66,7 +66,7 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
   st.timings.push_back({"delaunay", seconds_since(t0)});
   report(progress, "selection", 0.0);
   if (tables.valid()) tables.get();  // after the umbrellas: they are ready now, or failed
-  const Umbrellas& umbrellas = wait_for_umbrellas();
+  const Umbrellas& umbrellas = ready ? *ready : pending->get();
   if (give_up && give_up->load()) throw Cancelled();
 
   t0 = Clock::now();
@@ -141,15 +141,13 @@ MedialMesh medial_axis_after(const Samples& samples, const std::function<const U
 
 MedialMesh medial_axis(const Samples& samples, const Umbrellas& umbrellas, const MedialParams& params,
                        const InsideTest& inside, int solid_index, MedialAxisStats* stats, const Progress& progress) {
-  return medial_axis_after(samples, [&]() -> const Umbrellas& { return umbrellas; }, nullptr, params, inside,
-                           solid_index, stats, progress, nullptr);
+  return medial_axis_after(samples, &umbrellas, nullptr, params, inside, solid_index, stats, progress, nullptr);
 }
 
 MedialMesh medial_axis(const Samples& samples, std::shared_future<Umbrellas> umbrellas, const MedialParams& params,
                        const InsideTest& inside, int solid_index, MedialAxisStats* stats, const Progress& progress,
                        const std::atomic<bool>* give_up) {
-  return medial_axis_after(samples, [&]() -> const Umbrellas& { return umbrellas.get(); }, &umbrellas, params,
-                           inside, solid_index, stats, progress, give_up);
+  return medial_axis_after(samples, nullptr, &umbrellas, params, inside, solid_index, stats, progress, give_up);
 }
 
 double bare_delaunay_seconds(const std::vector<Point3>& points, BareOrder order) {
