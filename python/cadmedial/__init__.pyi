@@ -71,5 +71,6 @@ def compute(
     progress: Optional[ProgressCallback] = ...,
     plain_medial: bool = ...,
     adapt: bool = ...,
+    refine: Optional[bool] = ...,
 ) -> MedialAxisResult: ...
 def load(path: Union[str, os.PathLike[str]]) -> MedialAxisResult: ...

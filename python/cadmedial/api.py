@@ -98,7 +98,7 @@ def _flag(name, value):
 
 
 def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=None,
-            plain_medial=False, adapt=True):
+            plain_medial=False, adapt=True, refine=None):
     """The inner medial axis of every solid of ``source``.
 
     source    a STEP/IGES/BREP file path, BREP text, a FreeCAD Part.Shape or a _core.Shape
@@ -117,16 +117,24 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
               a quarter of the spacing, or to what the thinnest wall needs (at most a 32nd)
               where that takes at most 3 times the samples (a second sampling pass); False,
               like the program's --uniform, keeps one spacing everywhere.
+    refine    True samples a solid again with 2.5 times the samples, at most twice, where its
+              axis comes out with an Euler characteristic other than the solid's (holes or extra
+              loops: too few samples for its walls); like the program's --refine. None (default)
+              refines only when neither spacing nor samples is given: a density you chose is kept.
+              Each solid's stats say how often it was refined ("refinements") and at what
+              spacing ("spacing").
 
     Returns a MedialAxisResult. Raises InvalidInput (bad file, shape or parameter; also a
     ValueError), GeometryError (a stage failed; also a RuntimeError) or Cancelled.
     """
     shape = read_shape(source)
+    refine = (spacing is None and samples is None) if refine is None else _flag("refine", refine)
     spacing, samples = _density(spacing, samples)
     plain_medial = _flag("plain_medial", plain_medial)
     adapt = _flag("adapt", adapt)
     mesh, stats = _core.compute_medial_axis(shape, spacing, samples, _number("theta", theta),
-                                            _number("rho", rho), progress, plain_medial, adapt)
+                                            _number("rho", rho), progress, plain_medial, adapt,
+                                            refine)
     return MedialAxisResult(mesh, json.loads(stats))
 
 

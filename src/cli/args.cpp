@@ -13,8 +13,8 @@ namespace cadmedial::cli {
 std::string usage() {
   return
       "usage:\n"
-      "  cadmedial compute INPUT -o OUTPUT [--spacing S | --samples N] [--theta DEG] [--rho R]\n"
-      "                    [--stats FILE.json] [--quiet]\n"
+      "  cadmedial compute INPUT -o OUTPUT [--spacing S | --samples N] [--refine] [--theta DEG]\n"
+      "                    [--rho R] [--stats FILE.json] [--quiet]\n"
       "  cadmedial info INPUT [--spacing S | --samples N]\n"
       "  cadmedial --help | --version\n"
       "\n"
@@ -25,7 +25,11 @@ std::string usage() {
       "                   .obj (radius in 'vr' lines, 1-D edges as 'l' lines)\n"
       "                   or .ma (Q-MAT: vertices with radius, edges, triangles)\n"
       "  --spacing S      boundary sample spacing in model units (> 0)\n"
-      "  --samples N      or: about N boundary samples over all solids (default 20000)\n"
+      "  --samples N      or: about N boundary samples over all solids (default 20000, then --refine)\n"
+      "  --refine         where a solid's axis comes out with an Euler characteristic other than the\n"
+      "                   solid's (holes or extra loops: too few samples for its walls), sample that\n"
+      "                   solid again with 2.5 times the samples, at most twice; the default when\n"
+      "                   neither --spacing nor --samples is given\n"
       "  --theta DEG      Angle condition threshold in degrees, in (0, 90) (default 5)\n"
       "  --rho R          Ratio condition threshold, > 0 (default 8)\n"
       "  --stats F        also write run statistics as JSON\n"
@@ -118,6 +122,9 @@ Args parse_args(const std::vector<std::string>& argv) {
       args.params.medial.theta_deg = theta;
     } else if (arg == "--rho") {
       args.params.medial.rho = positive(arg, take_value());
+    } else if (arg == "--refine") {
+      no_value();
+      args.params.sampling.refine_topology = true;
     } else if (arg == "--uniform") {
       no_value();
       args.params.sampling.adapt_to_walls = false;
@@ -134,6 +141,8 @@ Args parse_args(const std::vector<std::string>& argv) {
     }
   }
   if (spacing_set && samples_set) throw InvalidInput("give --spacing or --samples, not both");
+  // A density the user chose is kept; the default one is only where the sampling starts.
+  if (!spacing_set && !samples_set) args.params.sampling.refine_topology = true;
 
   if (positional.empty()) throw InvalidInput("no command given (try 'cadmedial --help')");
   const std::string command = positional[0];

@@ -43,8 +43,13 @@ int run_compute(const Args& args) {
   summary.precision(4);
   const std::size_t solids = result.stats.solids.size();
   summary << "cadmedial: " << solids << (solids == 1 ? " solid, " : " solids, ")
-          << result.stats.samples << " samples (spacing " << result.stats.spacing << "), medial mesh of "
-          << result.mesh.num_vertices() << " vertices";
+          << result.stats.samples << " samples (spacing " << result.stats.spacing;
+  // The finest spacing a solid was sampled again at, for its axis's topology (--refine).
+  double refined = 0;
+  for (const SolidStats& s : result.stats.solids)
+    if (s.refinements > 0 && (refined == 0 || s.spacing < refined)) refined = s.spacing;
+  if (refined > 0) summary << ", refined to " << refined << " for the axis's topology";
+  summary << "), medial mesh of " << result.mesh.num_vertices() << " vertices";
   // Edges only when there are some: most parts have none, and the line stays as it was for them.
   if (result.mesh.num_edges() > 0)
     summary << ", " << result.mesh.num_faces() << " faces and " << result.mesh.num_edges()

@@ -61,6 +61,11 @@ struct SamplingParams {
   /// 32nd, where that takes at most 3 times the samples); the target count is the uniform
   /// sampling's.
   bool adapt_to_walls = true;
+  /// Where a solid's medial axis comes out with an Euler characteristic other than the solid's
+  /// (holes or extra loops where the samples are too sparse for its walls), sample that solid
+  /// again with 2.5 times the samples and compute it anew, at most twice. The command line and
+  /// Python turn this on when the user gives no density.
+  bool refine_topology = false;
   static constexpr std::size_t default_target_samples = 20000;
 };
 

@@ -67,6 +67,7 @@ def run():
     panel = task_panel.active_panel
     report["task_dialog_open"] = Gui.Control.activeDialog()
     report["preview_default"] = panel.preview.text()
+    report["refine_default"] = panel.refine.isChecked()
     panel.samples.setValue(4000)
     settle(0.2)
     report["preview_4000"] = panel.preview.text()
@@ -83,7 +84,7 @@ def run():
         "status": feature.Status, "points": feature.Mesh.CountPoints,
         "facets": feature.Mesh.CountFacets, "vertex_count": feature.VertexCount,
         "colors": len(feature.RadiusColors), "coloring": vobj.Coloring,
-        "samples": feature.Samples, "radius": [feature.RadiusMin.Value, feature.RadiusMax.Value],
+        "samples": feature.Samples, "refine": feature.Refine, "radius": [feature.RadiusMin.Value, feature.RadiusMax.Value],
         "proxy": type(vobj.Proxy).__module__ + "." + type(vobj.Proxy).__name__,
         "source_display": box.ViewObject.DisplayMode}
     shape = doc.getObject("MedialShape")
@@ -178,9 +179,10 @@ def run():
     panel = task_panel.active_panel
     report["edit_panel_for"] = panel.edit.Name if panel and panel.edit else None
     panel.theta.setValue(10.0)
+    panel.refine.setChecked(False)
     panel.accept()
     settle(0.5)
-    report["edited"] = {"theta": feature.Theta, "status": feature.Status,
+    report["edited"] = {"theta": feature.Theta, "refine": feature.Refine, "status": feature.Status,
                         "dialog_open": Gui.Control.activeDialog()}
 
     # The console one-liner gets the coloured view provider too.

@@ -75,6 +75,7 @@ def test_task_panel_previews_the_sample_count(smoke):
     assert abs(shown(smoke["preview_default"]) - 20000) <= 0.15 * 20000, smoke["preview_default"]
     assert abs(shown(smoke["preview_4000"]) - 4000) <= 0.15 * 4000, smoke["preview_4000"]
     assert smoke["stop_enabled_while_running"] is True
+    assert smoke["refine_default"] is True  # sample finer where the axis's topology is wrong
 
 
 def test_one_feature_per_selected_solid(smoke):
@@ -88,6 +89,7 @@ def test_feature_is_coloured_per_vertex(smoke):
     assert feature["colors"] == feature["points"]
     assert feature["coloring"] is True
     assert feature["samples"] == 4000
+    assert feature["refine"] is True  # the panel's default
     assert feature["proxy"] == "cadmedial.gui.view_provider.ViewProviderMedialAxis"
     assert smoke["shape_faces"] > 0
 
@@ -127,7 +129,7 @@ def test_stop_cancels_the_compute_and_adds_nothing(smoke):
 
 def test_task_panel_edits_an_existing_feature(smoke):
     assert smoke["edit_panel_for"] == "MedialAxis"
-    assert smoke["edited"] == {"theta": 10.0, "status": "ok", "dialog_open": False}
+    assert smoke["edited"] == {"theta": 10.0, "refine": False, "status": "ok", "dialog_open": False}
 
 
 def test_console_one_liner_gets_the_coloured_view(smoke):

@@ -112,3 +112,42 @@ def test_walls_thinner_than_two_spacings_are_warned_about(box_step):
     fine = cadmedial.compute(box_step, spacing=3.0)
     assert fine.stats["warnings"] == []
     assert fine.stats["solids"][0]["thinnest_wall"] is None  # only walls under 2 spacings are looked for
+
+
+def test_refine_samples_a_thin_walled_cup_finer_until_its_axis_has_the_cups_topology(data):
+    # Walls 1 thick at one spacing of 2: the sheets inside them break apart (the premise). A
+    # density given is kept unless refine=True; then the cup is sampled again at 2 / sqrt(2.5).
+    cup = data("cup_40x30x20.brep")
+    once = cadmedial.compute(cup, spacing=2.0, adapt=False)
+    solid = once.stats["solids"][0]
+    assert solid["solid_euler_characteristic"] == 1
+    assert solid["euler_characteristic"] != 1 or solid["components"] > 1
+    assert solid["refinements"] == 0 and solid["spacing"] == 2.0
+    assert any("medial axis" in w for w in once.stats["warnings"])
+    refined = cadmedial.compute(cup, spacing=2.0, adapt=False, refine=True)
+    solid = refined.stats["solids"][0]
+    assert solid["euler_characteristic"] == 1 and solid["components"] == 1
+    assert solid["refinements"] >= 1
+    assert solid["spacing"] == pytest.approx(2.0 / 2.5 ** (solid["refinements"] / 2))
+    assert refined.stats["spacing"] == 2.0  # what the parameters gave
+    assert refined.stats["samples"] > once.stats["samples"]
+    assert not any("medial axis" in w for w in refined.stats["warnings"])
+
+
+def test_refine_defaults_to_on_only_when_no_density_is_given(box_step, monkeypatch):
+    asked = []
+    real = cadmedial._core.compute_medial_axis
+
+    def spy(*args):
+        asked.append(args[-1])  # refine, the last positional argument
+        return real(*args)
+
+    monkeypatch.setattr(cadmedial._core, "compute_medial_axis", spy)
+    cadmedial.compute(box_step)
+    cadmedial.compute(box_step, samples=SAMPLES)
+    cadmedial.compute(box_step, spacing=3.0)
+    cadmedial.compute(box_step, samples=SAMPLES, refine=True)
+    cadmedial.compute(box_step, refine=False)
+    assert asked == [True, False, False, True, False]
+    with pytest.raises(cadmedial.InvalidInput, match="refine must be True or False"):
+        cadmedial.compute(box_step, refine="yes")

@@ -32,9 +32,15 @@ INPUTS = "Medial Axis"
 OUTPUTS = "Result"
 READ_ONLY, HIDDEN = 1, 2
 # Read-only counts added after the first release: documents saved before lack them, and get them
-# when reopened (see onDocumentRestored). Their default, 0, is right for those: no edges then.
+# when reopened (see onDocumentRestored). Their default, 0, is right for those: no edges, no
+# refinement then.
 LATER_COUNTS = [("App::PropertyInteger", "EdgeCount",
-                 "1-D edges of the medial mesh (segments of the axis that no face carries)")]
+                 "1-D edges of the medial mesh (segments of the axis that no face carries)"),
+                ("App::PropertyInteger", "Refinements",
+                 "Times a solid was sampled again, finer, because its axis's topology was wrong "
+                 "(the most over the solids)")]
+REFINE_DOC = ("Sample a solid again with 2.5 times the samples (at most twice) where its medial "
+              "axis's Euler characteristic is not the solid's")
 
 
 class MedialAxis:
@@ -53,13 +59,16 @@ class MedialAxis:
             "Approximate number of boundary samples, used when Spacing is 0; 0 means 20000")
         add("App::PropertyFloat", "Theta", INPUTS, "Angle condition threshold in degrees, in (0, 90)")
         add("App::PropertyFloat", "Rho", INPUTS, "Ratio condition threshold, > 0")
+        add("App::PropertyBool", "Refine", INPUTS, REFINE_DOC)
         obj.Theta = 5.0
         obj.Rho = 8.0
+        obj.Refine = True
         for kind, name, doc in [
                 ("App::PropertyInteger", "SampleCount", "Number of boundary samples used"),
                 ("App::PropertyInteger", "VertexCount", "Vertices of the medial mesh"),
                 ("App::PropertyInteger", "FaceCount", "Polygons of the medial mesh"),
-                ("App::PropertyLength", "SpacingUsed", "Sample spacing used"),
+                ("App::PropertyLength", "SpacingUsed",
+                 "Sample spacing used (the finest, where a solid was refined)"),
                 ("App::PropertyLength", "RadiusMin", "Smallest medial radius"),
                 ("App::PropertyLength", "RadiusMax", "Largest medial radius"),
                 ("App::PropertyFloat", "ComputeTime", "Seconds of the last compute"),
@@ -89,6 +98,10 @@ class MedialAxis:
     def onDocumentRestored(self, obj):
         self._init_transient()
         add_later_counts(obj)
+        if "Refine" not in obj.PropertiesList:
+            # Off for a document saved before it existed: a recompute gives what it gave then.
+            obj.addProperty("App::PropertyBool", "Refine", INPUTS, REFINE_DOC)
+            obj.Refine = False
 
     def execute(self, obj):
         started = time.perf_counter()
@@ -130,7 +143,7 @@ def add_later_counts(obj):
 def parameters_of(obj):
     """What compute_for(obj) depends on besides the source's shape."""
     return (obj.Source.Name if obj.Source else None, float(obj.Spacing.Value), int(obj.Samples),
-            float(obj.Theta), float(obj.Rho))
+            float(obj.Theta), float(obj.Rho), bool(obj.Refine))
 
 
 def compute_for(obj):
@@ -138,20 +151,21 @@ def compute_for(obj):
     if obj.Source is None:
         raise cadmedial.InvalidInput("no Source: link a solid")
     return compute_shape(Part.getShape(obj.Source), obj.Spacing.Value, obj.Samples, obj.Theta,
-                         obj.Rho, obj.Label)
+                         obj.Rho, obj.Label, bool(obj.Refine))
 
 
-def compute_shape(shape, spacing, samples, theta, rho, label):
+def compute_shape(shape, spacing, samples, theta, rho, label, refine=None):
     """cadmedial.compute on a Part.Shape, with FreeCAD's progress bar (Esc cancels) in the GUI."""
     if shape.isNull():
         raise cadmedial.InvalidInput("the source has no shape (recompute it first?)")
     spacing = spacing if spacing > 0 else None
     samples = samples if (spacing is None and samples > 0) else None
     if not App.GuiUp:
-        return cadmedial.compute(shape, spacing=spacing, samples=samples, theta=theta, rho=rho)
+        return cadmedial.compute(shape, spacing=spacing, samples=samples, theta=theta, rho=rho,
+                                 refine=refine)
     with StatusBarProgress("Medial axis of %s" % label) as progress:
         return cadmedial.compute(shape, spacing=spacing, samples=samples, theta=theta, rho=rho,
-                                 progress=progress)
+                                 refine=refine, progress=progress)
 
 
 class StatusBarProgress:
@@ -196,7 +210,10 @@ def store_result(obj, result):
     obj.RadiusColors = [tuple(c) for c in colors_of(result.radius, low, high).tolist()]
     stats = result.stats
     obj.SampleCount = int(stats.get("samples", 0))
-    obj.SpacingUsed = float(stats.get("spacing", 0.0))
+    solids = stats.get("solids", [])
+    obj.SpacingUsed = min((float(s["spacing"]) for s in solids if "spacing" in s),
+                          default=float(stats.get("spacing", 0.0)))
+    obj.Refinements = max((int(s.get("refinements", 0)) for s in solids), default=0)
     obj.VertexCount = result.num_vertices
     obj.FaceCount = result.num_faces
     obj.EdgeCount = result.num_edges
@@ -223,11 +240,11 @@ def medial_result(obj):
 
 
 def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, shape=False,
-                     result=None, name="MedialAxis"):
+                     result=None, name="MedialAxis", refine=None):
     """Adds a MedialAxis feature for ``source`` (a document object with a solid shape) and
     computes it; with shape=True also a MedialShape (Part feature of planar faces).
 
-    spacing/samples/theta/rho as in cadmedial.compute. ``result``: a MedialAxisResult already
+    spacing/samples/theta/rho/refine as in cadmedial.compute. ``result``: a MedialAxisResult already
     computed with these parameters (the task panel computes in a thread first).
     Returns the new object. When the compute fails, the error goes to the report view and is
     raised, and the document is left as it was: no object is added.
@@ -235,10 +252,12 @@ def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, sha
     doc = source.Document
     if "Touched" in source.State or "Invalid" in source.State:
         source.recompute()
+    if refine is None:
+        refine = not spacing and not samples  # as cadmedial.compute decides
     if result is None:
         try:
             result = compute_shape(Part.getShape(source), spacing or 0.0, samples or 0,
-                                   theta, rho, source.Label)
+                                   theta, rho, source.Label, refine)
         except Exception as error:
             App.Console.PrintError("Medial axis of %s: %s\n" % (source.Label, error))
             raise
@@ -250,6 +269,7 @@ def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, sha
     obj.Samples = 0 if spacing else int(samples or 0)
     obj.Theta = theta
     obj.Rho = rho
+    obj.Refine = bool(refine)
     proxy.pending = (parameters_of(obj), result)
     attach_view_provider(obj, MedialAxis.Type)
     doc.recompute([obj])  # unlike obj.recompute(), this also clears the object's Touched flag

@@ -62,6 +62,11 @@ class TaskPanelMedialAxis:
         grid.addWidget(self.by_spacing, 1, 0)
         grid.addWidget(self.spacing, 1, 1)
         grid.addWidget(self.preview, 2, 0, 1, 2)
+        self.refine = QtWidgets.QCheckBox("Sample finer where the axis's topology is wrong")
+        self.refine.setToolTip("Where a solid's medial axis has holes or extra loops (its Euler "
+                               "characteristic is not the solid's), sample it again with 2.5 "
+                               "times the samples, at most twice")
+        grid.addWidget(self.refine, 3, 0, 1, 2)
         layout.addWidget(density)
 
         selection = QtWidgets.QGroupBox("Selection of medial faces")
@@ -111,6 +116,7 @@ class TaskPanelMedialAxis:
         samples = source.Samples if source is not None else 0
         self.theta.setValue(source.Theta if source is not None else 5.0)
         self.rho.setValue(source.Rho if source is not None else 8.0)
+        self.refine.setChecked(bool(source.Refine) if source is not None else True)
         self.samples.setValue(samples or 20000)
         if spacing > 0:
             self.spacing.setValue(spacing)
@@ -130,7 +136,8 @@ class TaskPanelMedialAxis:
         by_spacing = self.by_spacing.isChecked()
         return {"spacing": self.spacing.value() if by_spacing else None,
                 "samples": None if by_spacing else self.samples.value(),
-                "theta": self.theta.value(), "rho": self.rho.value()}
+                "theta": self.theta.value(), "rho": self.rho.value(),
+                "refine": self.refine.isChecked()}
 
     def _planned_spacing(self, spacing, samples):
         plans = [cadmedial.plan_sampling(s, spacing=spacing, samples=samples) for s in self.shapes]
@@ -186,7 +193,7 @@ class TaskPanelMedialAxis:
     # -- running ----------------------------------------------------------------------------
     def _set_running(self, running):
         for widget in (self.samples, self.spacing, self.by_samples, self.by_spacing, self.theta,
-                       self.rho, self.make_shape):
+                       self.rho, self.refine, self.make_shape):
             widget.setEnabled(not running)
         if not running:
             self._mode_changed()
@@ -237,6 +244,7 @@ class TaskPanelMedialAxis:
         obj.Samples = p["samples"] or 0
         obj.Theta = p["theta"]
         obj.Rho = p["rho"]
+        obj.Refine = p["refine"]
         obj.Document.recompute()
         if obj.Status != "ok":
             self._show_error(obj.Status)

@@ -13,7 +13,7 @@ class ComputeJob:
     """Computes ``cadmedial.compute(shape, **params)`` for each shape in turn, in a thread.
 
     shapes  list of cadmedial._core.Shape (read in the GUI thread beforehand)
-    params  keyword arguments of cadmedial.compute (spacing, samples, theta, rho)
+    params  keyword arguments of cadmedial.compute (spacing, samples, theta, rho, refine)
     After ``done``: ``results`` (one MedialAxisResult per shape) when all succeeded, else
     ``error`` (the exception; a cadmedial.Cancelled after cancel()).
     """

@@ -30,6 +30,11 @@ struct SolidStats {
   std::size_t edges = 0;           ///< output edges: 1-D parts of the axis that no face carries
   std::size_t unattached_faces = 0;  ///< completion triangles left out because they would close a loop
   long euler_characteristic = 0;   ///< V - E + F of the output; the solid's when the topology is right
+  long solid_euler_characteristic = 0;  ///< the solid's, counted on its B-rep (features/solid_euler.h)
+  /// The uniform spacing of the sampling the output comes from: ComputeStats::spacing, or finer
+  /// after `refinements` (SamplingParams::refine_topology)
+  double spacing = 0.0;
+  int refinements = 0;  ///< times the solid was sampled again because its axis's topology was wrong
   /// faces removed to open closed pockets of zero volume (open_flat_pockets), one per pocket
   std::size_t opened_pockets = 0;
   /// Thickness of the thinnest wall the samples show (thinnest_wall), if under 2 spacings, else
@@ -41,7 +46,7 @@ struct SolidStats {
 };
 
 struct ComputeStats {
-  double spacing = 0.0;           ///< the sample spacing used (model units)
+  double spacing = 0.0;           ///< the sample spacing the parameters give (model units); see SolidStats::spacing
   std::size_t samples = 0;
   std::size_t vertices = 0;
   std::size_t faces = 0;

@@ -80,6 +80,9 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"edges\": " + std::to_string(s.edges);
     j += ", \"unattached_faces\": " + std::to_string(s.unattached_faces);
     j += ", \"euler_characteristic\": " + std::to_string(s.euler_characteristic);
+    j += ", \"solid_euler_characteristic\": " + std::to_string(s.solid_euler_characteristic);
+    j += ", \"spacing\": " + number(s.spacing);
+    j += ", \"refinements\": " + std::to_string(s.refinements);
     j += ", \"exact_inside_tests\": " + std::to_string(s.exact_inside_tests);
     j += ", \"thinnest_wall\": " + number(s.thinnest_wall);
     // Where: null with the wall (none found).

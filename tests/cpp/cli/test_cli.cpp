@@ -4,6 +4,7 @@
 
 #include <sys/wait.h>
 
+#include <BRepAlgoAPI_Cut.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
@@ -21,6 +22,7 @@
 
 #include "core/io/write_medial_mesh.h"
 #include "io/io_test_files.h"
+#include "support/engine_run.h"
 
 namespace cadmedial {
 namespace {
@@ -287,6 +289,70 @@ TEST(Cli, WarnsOfWallsThinnerThanTwoSpacings) {
   const CliRun adapted = run(dir, {"compute", plate, "-o", dir.file("plate2.ply"), "--spacing", "1", "--quiet"});
   ASSERT_EQ(adapted.status, 0) << adapted.err;
   EXPECT_EQ(adapted.err, "");
+}
+
+// The stats' figure `key` of the first solid (a number), or NaN.
+double first_solid_figure(const std::string& json, const std::string& key) {
+  const std::size_t solids = json.find("\"solids\"");
+  const std::size_t at = json.find("\"" + key + "\": ", solids);
+  if (solids == std::string::npos || at == std::string::npos) return std::nan("");
+  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
+}
+
+// A box 40 x 30 x 20 hollowed to walls 1 thick, at spacing 2 with --uniform: the sheets inside
+// the walls break apart (Euler 0, the solid's 1). The program says so; with --refine it samples
+// the cup again, finer, and the axis is right: the summary gives the finer spacing, the stats
+// the refinement, and no warning of the topology is left.
+TEST(Cli, RefineSamplesASolidFinerWhereItsAxisHasTheWrongTopology) {
+  TempDir dir;
+  const std::string cup = dir.file("cup.brep");
+  const TopoDS_Shape hollowed = BRepAlgoAPI_Cut(BRepPrimAPI_MakeBox(40, 30, 20).Shape(),
+                                                BRepPrimAPI_MakeBox(gp_Pnt(1, 1, 1), gp_Pnt(39, 29, 20)).Shape())
+                                    .Shape();
+  BRepTools::Write(hollowed, cup.c_str());
+  const std::vector<std::string> base{"compute", cup, "-o", dir.file("cup.ply"), "--spacing", "2", "--uniform",
+                                      "--quiet", "--stats", dir.file("cup.json")};
+  const CliRun once = run(dir, base);
+  ASSERT_EQ(once.status, 0) << once.err;
+  EXPECT_NE(once.err.find("cadmedial: warning: the medial axis's Euler characteristic is 0 where the solid's is 1"),
+            std::string::npos)
+      << once.err;
+  EXPECT_EQ(once.out.find("refined to"), std::string::npos) << once.out;
+  EXPECT_EQ(first_solid_figure(test::read_file(dir.file("cup.json")), "refinements"), 0);
+
+  std::vector<std::string> refine = base;
+  refine.push_back("--refine");
+  const CliRun refined = run(dir, refine);
+  ASSERT_EQ(refined.status, 0) << refined.err;
+  EXPECT_NE(refined.out.find("(spacing 2, refined to 1.265 for the axis's topology)"), std::string::npos)
+      << refined.out;
+  EXPECT_EQ(refined.err.find("medial axis"), std::string::npos) << refined.err;
+  const std::string json = test::read_file(dir.file("cup.json"));
+  EXPECT_EQ(first_solid_figure(json, "refinements"), 1) << json;
+  EXPECT_EQ(first_solid_figure(json, "euler_characteristic"), 1) << json;
+  EXPECT_EQ(first_solid_figure(json, "solid_euler_characteristic"), 1) << json;
+}
+
+// Without --spacing or --samples the density is only where the sampling starts: axom's
+// boxed_sphere (a box with a spherical void, and the ball in it) has holes in its box's sheets at
+// the default 20,000 samples, and is sampled finer; asked for 20,000 samples, it is not.
+TEST(Cli, TheDefaultDensityIsRefinedWhereTheAxisIsWrongAChosenOneIsNot) {
+  const std::string part = test::model_path("axom/boxed_sphere.step");
+  if (part.empty()) GTEST_SKIP() << "../shared/data/models is not beside the repository";
+  TempDir dir;
+  const std::string stats = dir.file("s.json");
+  const CliRun chosen = run(dir, {"compute", part, "-o", dir.file("a.ply"), "--samples", "20000", "--quiet",
+                                  "--stats", stats});
+  ASSERT_EQ(chosen.status, 0) << chosen.err;
+  EXPECT_EQ(first_solid_figure(test::read_file(stats), "refinements"), 0);
+  EXPECT_NE(chosen.err.find("solid 1: the medial axis's Euler characteristic is"), std::string::npos) << chosen.err;
+  const CliRun by_default = run(dir, {"compute", part, "-o", dir.file("b.ply"), "--quiet", "--stats", stats});
+  ASSERT_EQ(by_default.status, 0) << by_default.err;
+  const std::string json = test::read_file(stats);
+  EXPECT_GE(first_solid_figure(json, "refinements"), 1) << json;
+  EXPECT_EQ(first_solid_figure(json, "euler_characteristic"), first_solid_figure(json, "solid_euler_characteristic"))
+      << json;
+  EXPECT_EQ(by_default.err.find("medial axis"), std::string::npos) << by_default.err;
 }
 
 TEST(Cli, ProgressIsALinePerStageChangeNotAFlood) {

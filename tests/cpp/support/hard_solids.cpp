@@ -110,6 +110,17 @@ TopoDS_Solid make_block_with_rib(double a, double b, double c, double w, double 
   return single_valid_solid(unified(fuse(block, rib)), "make_block_with_rib");
 }
 
+TopoDS_Solid make_block_with_ribs(double a, double b, double c, int n, double x0, double pitch, double w,
+                                  double rib_height) {
+  TopoDS_Shape shape = BRepPrimAPI_MakeBox(a, b, c).Shape();
+  // Each rib starts inside the block, as make_block_with_rib's does.
+  for (int k = 0; k < n; ++k) {
+    const double x = x0 + k * pitch;
+    shape = fuse(shape, BRepPrimAPI_MakeBox(gp_Pnt(x, 0, c / 2), gp_Pnt(x + w, b, c + rib_height)).Shape());
+  }
+  return single_valid_solid(unified(shape), "make_block_with_ribs");
+}
+
 TopoDS_Solid make_block_with_boss(double a, double b, double c, double r, double boss_height) {
   const TopoDS_Shape block = BRepPrimAPI_MakeBox(a, b, c).Shape();
   const TopoDS_Shape boss =

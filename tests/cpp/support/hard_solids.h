@@ -12,6 +12,12 @@ namespace cadmedial::test {
 /// on its top (coplanar faces merged): a thin wall across the whole block.
 TopoDS_Solid make_block_with_rib(double a, double b, double c, double w, double rib_height);
 
+/// The block [0,a] x [0,b] x [0,c] with n ribs w wide and rib_height tall across its top, the
+/// k-th over x in [x0 + k pitch, x0 + k pitch + w] (coplanar faces merged): thin walls standing
+/// free of each other.
+TopoDS_Solid make_block_with_ribs(double a, double b, double c, int n, double x0, double pitch, double w,
+                                  double rib_height);
+
 /// The block [0,a] x [0,b] x [0,c] with a cylindrical boss of radius r and height boss_height
 /// standing on the centre of its top face.
 TopoDS_Solid make_block_with_boss(double a, double b, double c, double r, double boss_height);
