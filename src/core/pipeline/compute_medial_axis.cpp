@@ -722,6 +722,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         // The whole solid finer, not only its thin walls: where the sheets break is not known,
         // and the thin-wall refinement of the finer pass follows as before.
         t0 = Clock::now();
+        report(sub, "refining", 0.0);
         ss.spacing /= std::sqrt(kTopologySampleFactor);
         ++ss.refinements;
         sampled[i] = SolidSampling();  // its memory back before the finer pass
