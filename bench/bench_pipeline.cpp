@@ -1,7 +1,7 @@
 // Speed of the pipeline per stage beside CGAL's bare Delaunay triangulation of the same samples,
 // in the same run (the machine is shared and noisy: only ratios within one run mean much).
 //
-//   bench_pipeline INPUT [--samples N1,N2,...] [--repeat K] [--json FILE] [--uniform]
+//   bench_pipeline INPUT [--samples N1,N2,...] [--repeat K] [--json FILE] [--uniform] [--release-memory]
 //
 // For each target count the spacing is calibrated by sampling until the count is within 3 %; then
 // compute_medial_axis runs at that spacing, as the program does, and the bare Delaunay after it,
@@ -11,6 +11,11 @@
 // against a run without it. The yardstick is CGAL's range insert, as it comes (Hilbert sort with
 // the median policy); the pipeline sorts with the middle policy, a few per cent faster on most
 // parts, so the last column divides by a bare triangulation sorted that way too.
+//
+// Like the program, the benchmark keeps freed memory for reuse (keep_freed_memory): with glibc's
+// defaults each compute re-faulted most of its pages while the bare triangulation, which frees and
+// takes back blocks of the same sizes, re-faulted none. --release-memory keeps glibc's defaults.
+// The page faults of the fastest tries are printed beside their times.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include <sys/resource.h>
 
 #include "core/errors.h"
 #include "core/features/classify_features.h"
@@ -29,6 +35,7 @@
 #include "core/medial/reconstruct_faces.h"
 #include "core/pipeline/compute_medial_axis.h"
 #include "core/pipeline/exact_inside_test.h"
+#include "core/process_memory.h"
 #include "core/sampling/sample_solid.h"
 
 using namespace cadmedial;
@@ -38,6 +45,12 @@ namespace {
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+long minor_faults() {
+  struct rusage u {};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_minflt;
+}
+
 struct Row {
   std::size_t target = 0, samples = 0, vertices = 0, faces = 0;
   double spacing = 0, bare_delaunay = 0;
@@ -46,6 +59,7 @@ struct Row {
   /// slow spell of the shared machine spoils both alike (the fastest of each can come from
   /// different spells).
   double median_try_ratio = 0;
+  long faults = 0, bare_faults = 0;  ///< page faults of the fastest compute and bare triangulation
   Timings timings;  ///< compute_medial_axis's stages and total
 };
 
@@ -78,7 +92,9 @@ Row run(const TopoDS_Solid& solid, std::size_t target, double spacing0, int repe
   double best = -1;
   std::vector<double> ratios;
   for (int k = 0; k < repeat; ++k) {
+    long f0 = minor_faults();
     const ComputeResult result = compute_medial_axis(solid, params);
+    const long faults = minor_faults() - f0;
     const double total = stage(result.stats.timings, "total");
     if (best < 0 || total < best) {
       best = total;
@@ -86,8 +102,11 @@ Row run(const TopoDS_Solid& solid, std::size_t target, double spacing0, int repe
       row.samples = result.stats.samples;
       row.vertices = result.mesh.num_vertices();
       row.faces = result.mesh.num_faces();
+      row.faults = faults;
     }
+    f0 = minor_faults();
     const double bare = bare_delaunay_seconds(points);
+    if (k == 0 || bare < row.bare_delaunay) row.bare_faults = minor_faults() - f0;
     row.bare_delaunay = k == 0 ? bare : std::min(row.bare_delaunay, bare);
     const double middle = bare_delaunay_seconds(points, BareOrder::MiddlePolicy);
     row.bare_middle = k == 0 ? middle : std::min(row.bare_middle, middle);
@@ -111,18 +130,19 @@ std::vector<std::size_t> parse_counts(const std::string& text) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: bench_pipeline INPUT [--samples N1,N2,...] [--repeat K] [--json FILE] [--uniform]\n");
+    std::fprintf(stderr, "usage: bench_pipeline INPUT [--samples N1,N2,...] [--repeat K] [--json FILE] [--uniform] "
+                         "[--release-memory]\n");
     return 2;
   }
   const std::string input = argv[1];
   std::vector<std::size_t> counts{10000, 66686, 250000};
   std::string json_path;
   int repeat = 3;
-  bool uniform = false;
+  bool uniform = false, release = false;
   for (int i = 2; i < argc; ++i) {
     const std::string opt = argv[i];
-    if (opt == "--uniform") {
-      uniform = true;
+    if (opt == "--uniform" || opt == "--release-memory") {
+      (opt == "--uniform" ? uniform : release) = true;
       continue;
     }
     if (i + 1 >= argc) break;
@@ -131,14 +151,15 @@ int main(int argc, char** argv) {
     else if (opt == "--repeat") repeat = std::max(1, std::atoi(argv[i + 1]));
     ++i;
   }
+  if (!release) keep_freed_memory();
   try {
     const std::vector<TopoDS_Solid> solids = extract_solids(read_shape_file(input));
     const TopoDS_Solid& solid = solids.front();
     // "reconstruction" runs on a second thread during "delaunay"; "total" is the wall-clock time of
     // the whole compute (stages plus checks and the output's canonical order).
     // "per try" is the median of total / bare within each try (Row::median_try_ratio).
-    std::printf("| target | samples | spacing | setup | features | sampling | reconstruction | delaunay | selection | completion | inner | total | bare Delaunay | total / bare | per try | after sampling / bare | bare, middle policy | total / bare, middle |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("| target | samples | spacing | setup | features | sampling | reconstruction | delaunay | selection | completion | inner | total | bare Delaunay | total / bare | per try | after sampling / bare | bare, middle policy | total / bare, middle | page faults, compute / bare |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     std::ostringstream json;
     json << "[";
     for (size_t k = 0; k < counts.size(); ++k) {
@@ -149,21 +170,22 @@ int main(int argc, char** argv) {
       const Timings& t = r.timings;
       const double total = stage(t, "total");
       const double medial = total - stage(t, "setup") - stage(t, "features") - stage(t, "sampling");
-      std::printf("| %zu | %zu | %.4g | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.2f | %.2f | %.2f | %.3f | %.2f |\n",
+      std::printf("| %zu | %zu | %.4g | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.2f | %.2f | %.2f | %.3f | %.2f | %ld / %ld |\n",
                   r.target, r.samples, r.spacing, stage(t, "setup"), stage(t, "features"), stage(t, "sampling"),
                   stage(t, "reconstruction"), stage(t, "delaunay"), stage(t, "selection"), stage(t, "completion"),
                   stage(t, "inner"), total, r.bare_delaunay, total / r.bare_delaunay, r.median_try_ratio,
-                  medial / r.bare_delaunay, r.bare_middle, total / r.bare_middle);
+                  medial / r.bare_delaunay, r.bare_middle, total / r.bare_middle, r.faults, r.bare_faults);
       std::fflush(stdout);
       json << (k ? ",\n " : "\n ") << "{\"target\": " << r.target << ", \"samples\": " << r.samples
            << ", \"spacing\": " << r.spacing << ", \"vertices\": " << r.vertices << ", \"faces\": " << r.faces;
       for (const auto& [n, s] : t) json << ", \"" << n << "\": " << s;
       json << ", \"bare_delaunay\": " << r.bare_delaunay << ", \"bare_delaunay_middle\": " << r.bare_middle
-           << ", \"median_try_ratio\": " << r.median_try_ratio << "}";
+           << ", \"median_try_ratio\": " << r.median_try_ratio << ", \"page_faults\": " << r.faults
+           << ", \"bare_page_faults\": " << r.bare_faults << "}";
     }
     json << "\n]\n";
     if (!json_path.empty()) std::ofstream(json_path) << json.str();
-    std::printf("\npeak RSS %.0f MiB\n", peak_rss_mb());
+    std::printf("\npeak RSS %.0f MiB%s\n", peak_rss_mb(), release ? " (glibc's memory defaults)" : "");
   } catch (const Error& e) {
     std::fprintf(stderr, "bench_pipeline: %s\n", e.what());
     return 2;

@@ -19,6 +19,7 @@
 #include "args.h"
 #include "commands.h"
 #include "core/errors.h"
+#include "core/process_memory.h"
 
 namespace {
 
@@ -78,6 +79,7 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  cadmedial::keep_freed_memory();  // the process ends with the command: nothing to give back early
   try {
     return run(argc, argv);
   } catch (const cadmedial::InvalidInput& e) {
