@@ -337,6 +337,21 @@ void warn_of_sharp_wedge(const Samples& samples, int solid, int solids, std::vec
   warnings.push_back(msg.str());
 }
 
+// What `failure` says.
+std::string failure_message(const std::exception_ptr& failure) {
+  try {
+    std::rethrow_exception(failure);
+  } catch (const Standard_Failure& e) {
+    return std::string("OpenCASCADE: ") + e.GetMessageString();
+  } catch (const std::bad_alloc&) {
+    return "out of memory";
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (...) {
+    return "unknown error";
+  }
+}
+
 // Whether a solid's axis has the solid's topology, as far as the counts tell: its Euler
 // characteristic (the inner medial axis is homotopy equivalent to the solid) and one piece. The
 // inner stage keeps the largest piece and those that reach the boundary: a sheet that broke off
@@ -354,7 +369,7 @@ bool topology_is_right(const MedialAxisStats& ms, const SolidStats& ss) {
 // CTC 02 and 03 and Schenkel after two; brlcad's c.stp is not (bench/README.md).
 constexpr double kTopologySampleFactor = 2.5;
 constexpr int kTopologyRefinements = 2;
-constexpr double kMaxRefinedSamples = 2.0e6;
+constexpr double kMaxRefinedSamples = 1.0e6;  // about 2 GiB at the pipeline's 2 KiB per sample
 
 // Whether a solid whose axis came out of `samples` samples is worth sampling again, finer.
 bool worth_refining(const ComputeParams& params, const SolidStats& ss, const MedialAxisStats& ms, std::size_t samples) {
@@ -700,9 +715,9 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9), prepare_inside);
       const SolidJob job{i, n, features[i], m.solids[i], *samplers[i], params.medial, inside, prepare_inside};
       double check_seconds = 0;
-      SolidAxis axis;
-      for (;;) {
-        axis = axis_of(job, sampled[i], ss.spacing, to_check, stats.timings, sub);
+      // One try at the solid's current sampling, with its pockets opened and its times counted.
+      auto try_sampling = [&] {
+        SolidAxis axis = axis_of(job, sampled[i], ss.spacing, to_check, stats.timings, sub);
         // A void the solid does not have (flat pockets where samples lie in symmetric rings) shows
         // in the Euler characteristic; only then is the whole mesh's incidence worth building.
         ss.opened_pockets = 0;
@@ -718,18 +733,42 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         check_seconds += axis.check_seconds;
         add_timing(stats.timings, "reconstruction", axis.reconstruction_seconds);
         for (const auto& [stage, s] : axis.ms.timings) add_timing(stats.timings, stage, s);
-        if (!worth_refining(params, ss, axis.ms, sampled[i].samples.size())) break;
+        return axis;
+      };
+      SolidAxis axis = try_sampling();
+      while (worth_refining(params, ss, axis.ms, sampled[i].samples.size())) {
         // The whole solid finer, not only its thin walls: where the sheets break is not known,
-        // and the thin-wall refinement of the finer pass follows as before.
+        // and the thin-wall refinement of the finer pass follows as before. The coarser result
+        // stays until the finer one is made: a failure there (OpenCASCADE on a face, memory)
+        // leaves the user that one and a warning, not an error.
         t0 = Clock::now();
         report(sub, "refining", 0.0);
+        SolidSampling coarser = std::move(sampled[i]);
+        const SolidStats before = ss;
         ss.spacing /= std::sqrt(kTopologySampleFactor);
         ++ss.refinements;
-        sampled[i] = SolidSampling();  // its memory back before the finer pass
-        naming_solid(i, n, [&] {
-          sampled[i] = sample_uniformly(*samplers[i], ss.spacing, params.sampling.adapt_to_walls, sub);
-        });
-        add_timing(stats.timings, "sampling", seconds_since(t0));
+        std::exception_ptr refinement_failed;
+        try {
+          naming_solid(i, n, [&] {
+            sampled[i] = sample_uniformly(*samplers[i], ss.spacing, params.sampling.adapt_to_walls, sub);
+          });
+          add_timing(stats.timings, "sampling", seconds_since(t0));
+          axis = try_sampling();
+        } catch (const GeometryError&) {
+          refinement_failed = std::current_exception();
+        } catch (const Standard_Failure&) {
+          refinement_failed = std::current_exception();
+        } catch (const std::bad_alloc&) {
+          refinement_failed = std::current_exception();
+        }
+        if (refinement_failed) {
+          sampled[i] = std::move(coarser);
+          ss = before;
+          stats.warnings.push_back((n > 1 ? "solid " + std::to_string(i + 1) + ": " : std::string()) +
+                                   "sampling finer for the axis's topology failed (" +
+                                   failure_message(refinement_failed) + "); the axis is that of the coarser sampling");
+          break;
+        }
       }
       const Samples& samples = sampled[i].samples;
       MedialMesh& mesh = axis.mesh;
