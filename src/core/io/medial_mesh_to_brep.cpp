@@ -86,13 +86,17 @@ class Builder {
   }
 
   // Adds the segment {a, b} as a free edge of the compound, unless a face added before already
-  // has it as a side (it is in the compound through that face) or it has zero length (no edge).
+  // has it as a side (it is in the compound through that face) or it is shorter than the
+  // tolerance (no edge).
   void add_free_edge(int a, int b) {
-    if (point(a).Distance(point(b)) == 0.0) return;
+    if (same_point(a, b)) return;
     const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
     if (edges_.count(key)) return;
     builder_.Add(compound_, edge(a, b));
   }
+
+  // Whether OpenCASCADE takes the two vertices for one point (no edge can join them).
+  bool same_point(int a, int b) const { return point(a).Distance(point(b)) <= Precision::Confusion(); }
 
   gp_Pnt point(int v) const {
     const Point3& p = mesh_.vertices[v];
@@ -136,12 +140,14 @@ std::string medial_mesh_to_brep(const MedialMesh& mesh) {
     Builder b(mesh);
     std::vector<int> loop;
     for (; f < mesh.num_faces(); ++f) {
-      // Drop repeated points (consecutive, and last == first): their edges would have zero length.
+      // Drop repeated points (consecutive, and last == first): OpenCASCADE makes no edge between
+      // points closer than its tolerance (BRepBuilderAPI_MakeEdge fails; axom's boxed_sphere had
+      // three vertices of one polygon within 6e-14).
       loop.clear();
       const int* p = mesh.face(f);
       for (int i = 0; i < mesh.face_size(f); ++i)
-        if (loop.empty() || b.point(loop.back()).Distance(b.point(p[i])) > 0.0) loop.push_back(p[i]);
-      while (loop.size() > 1 && b.point(loop.back()).Distance(b.point(loop.front())) == 0.0) loop.pop_back();
+        if (loop.empty() || !b.same_point(loop.back(), p[i])) loop.push_back(p[i]);
+      while (loop.size() > 1 && b.same_point(loop.back(), loop.front())) loop.pop_back();
       if (loop.size() < 3) continue;
 
       // Zero area against the polygon's size: collinear points bound no face.

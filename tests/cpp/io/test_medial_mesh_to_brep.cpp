@@ -125,6 +125,26 @@ int children(const TopoDS_Shape& s, TopAbs_ShapeEnum type) {
   return n;
 }
 
+// Points closer than OpenCASCADE's tolerance (1e-7) count as one: no edge can join them. This
+// hexagon is a polygon of axom's boxed_sphere (sampled finer for its topology), whose last three
+// vertices lie within 6e-14 of each other; a 1-D edge between two such points is dropped too.
+TEST(MedialMeshToBrep, PointsWithinTheToleranceAreOnePoint) {
+  MedialMesh m;
+  m.vertices = {{-4.72147748, -3.75383745, -3.25429773}, {-4.72045503, -3.76055521, -3.25519351},
+                {-4.71477353, -3.77789515, -3.24257625}, {-4.71, -3.79, -3.2298065},
+                {-4.71, -3.79, -3.2298065 + 5e-14},      {-4.71 + 4e-14, -3.79, -3.2298065}};
+  m.radius.assign(6, 1.0);
+  m.add_face({0, 1, 2, 3, 4, 5}, FaceKind::Voronoi, 0);
+  m.edges = {{3, 4}};
+  m.edge_solid = {0};
+  const TopoDS_Shape shape = parse(medial_mesh_to_brep(m));
+  EXPECT_EQ(count(shape, TopAbs_FACE), 1);
+  EXPECT_EQ(count(shape, TopAbs_EDGE), 4);  // the quadrilateral 0 1 2 3
+  EXPECT_EQ(count(shape, TopAbs_VERTEX), 4);
+  EXPECT_EQ(children(shape, TopAbs_EDGE), 0);
+  EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+}
+
 TEST(MedialMeshToBrep, EdgesBecomeFreeEdgesSharingTheFacesVertices) {
   MedialMesh m;
   m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 2}, {0, 0, 0}};
