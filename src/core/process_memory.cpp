@@ -9,10 +9,12 @@ namespace cadmedial {
 
 void keep_freed_memory() {
 #if defined(__GLIBC__)
-  // Each call also turns off glibc's sliding thresholds. 32 MiB is the largest threshold mallopt
-  // takes (half of a thread arena's heap); larger blocks are mapped and unmapped as before.
+  // Each call also turns off glibc's sliding thresholds. Blocks up to 1 GiB come from the heap
+  // (at 250,000 samples the cells' centres alone take 45 MB). Threads' arenas still give back a
+  // heap that becomes wholly free: M_ARENA_MAX 1 would keep those too, but all threads then
+  // share one lock, and the Y-rod at 66,686 samples ran no faster (bench/README.md).
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
 #endif
 }
 

@@ -714,7 +714,6 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       std::function<void()> prepare_inside;
       const InsideTest inside = exact_inside_test(solid, 1e-7 * std::max(m.diag, 1e-9), prepare_inside);
       const SolidJob job{i, n, features[i], m.solids[i], *samplers[i], params.medial, inside, prepare_inside};
-      double check_seconds = 0;
       // One try at the solid's current sampling, with its pockets opened and its times counted.
       auto try_sampling = [&] {
         SolidAxis axis = axis_of(job, sampled[i], ss.spacing, to_check, stats.timings, sub);
@@ -730,7 +729,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
         // Beside the kept triangulation, overlapping "delaunay" as "check" and "reconstruction" do.
         if (axis.walls_seconds > 0 && sampled[i].field.is_uniform())
           add_timing(stats.timings, "walls", axis.walls_seconds);
-        check_seconds += axis.check_seconds;
+        if (checks_here) add_timing(stats.timings, "check", axis.check_seconds);  // 0 after the first try
         add_timing(stats.timings, "reconstruction", axis.reconstruction_seconds);
         for (const auto& [stage, s] : axis.ms.timings) add_timing(stats.timings, stage, s);
         return axis;
@@ -753,12 +752,19 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
             sampled[i] = sample_uniformly(*samplers[i], ss.spacing, params.sampling.adapt_to_walls, sub);
           });
           add_timing(stats.timings, "sampling", seconds_since(t0));
+          // The thin walls' own refinement comes on top of the uniform count worth_refining
+          // foresaw: the cap holds for what was sampled.
+          if (static_cast<double>(sampled[i].samples.size()) > kMaxRefinedSamples)
+            throw GeometryError("it took " + std::to_string(sampled[i].samples.size()) + " samples, more than the " +
+                                std::to_string(static_cast<long long>(kMaxRefinedSamples)) + " it may take");
           axis = try_sampling();
-        } catch (const GeometryError&) {
+        } catch (const Cancelled&) {
+          throw;
+        } catch (const InvalidInput&) {
+          throw;
+        } catch (const std::exception&) {  // GeometryError, memory, a library's own failure
           refinement_failed = std::current_exception();
         } catch (const Standard_Failure&) {
-          refinement_failed = std::current_exception();
-        } catch (const std::bad_alloc&) {
           refinement_failed = std::current_exception();
         }
         if (refinement_failed) {
@@ -777,7 +783,6 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       warn_of_thin_walls(axis.thin, sampled[i].field, i, n, ss, stats.warnings);
       warn_of_sharp_wedge(samples, i, n, stats.warnings);
       if (!params.medial.plain_medial) warn_of_topology(ms, ss, i, n, stats.warnings);
-      if (checks_here) add_timing(stats.timings, "check", check_seconds);
       ss.vertices = mesh.num_vertices();
       ss.faces = mesh.num_faces();
       ss.dropped_faces = ms.dropped_faces;

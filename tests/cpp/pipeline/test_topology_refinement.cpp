@@ -89,37 +89,39 @@ TEST(TopologyRefinement, RibsWhoseSheetsBrokeOffAreSampledFinerUntilTheAxisIsOne
   }
 }
 
-// A refinement that fails (here: its sampling, made to throw as OpenCASCADE might on a face) loses
-// nothing: the coarser axis is the result, with a warning that says why. A cancel there cancels.
+// A refinement that fails (made to throw, as OpenCASCADE might on a face, at its sampling, at the
+// selection beside its worker thread, or at the inner stage) loses nothing: the coarser axis is
+// the result, with a warning that says why. A cancel there cancels.
 TEST(TopologyRefinement, AFailedRefinementKeepsTheCoarserAxisAndSaysSo) {
   const TopoDS_Solid plate = make_plate_with_holes(60, 40, 3, 5, 3, 2.5, false);
   ComputeParams params;
   params.sampling.spacing = 4.475;
   params.sampling.adapt_to_walls = false;
+  const ComputeResult once = compute_medial_axis(plate, params);
+  ASSERT_NE(once.stats.solids.at(0).euler_characteristic, -14);  // the premise: it wants refining
   params.sampling.refine_topology = true;
-  auto failing_after_refining = [](bool cancel) {
-    return [cancel, refining = false](const std::string& stage, double) mutable {
+  auto failing_after_refining = [](const std::string& at, bool cancel) {
+    return [at, cancel, refining = false](const std::string& stage, double) mutable {
       refining = refining || stage == "refining";
-      if (refining && stage == "sampling") {
+      if (refining && stage == at) {
         if (cancel) return false;
         throw GeometryError("injected failure");
       }
       return true;
     };
   };
-  const ComputeResult kept = compute_medial_axis(plate, params, failing_after_refining(false));
-  params.sampling.refine_topology = false;
-  const ComputeResult once = compute_medial_axis(plate, params);
-  ASSERT_NE(once.stats.solids.at(0).euler_characteristic, -14);  // the premise: it wants refining
-  expect_same_mesh(kept.mesh, once.mesh);
-  EXPECT_EQ(kept.stats.solids.at(0).refinements, 0);
-  EXPECT_EQ(kept.stats.solids.at(0).spacing, 4.475);
-  EXPECT_EQ(kept.stats.samples, once.stats.samples);
-  EXPECT_TRUE(has_warning(kept, "sampling finer for the axis's topology failed (injected failure); the axis is "
-                                "that of the coarser sampling"));
-  EXPECT_TRUE(has_warning(kept, "the medial axis's Euler characteristic is"));
-  params.sampling.refine_topology = true;
-  EXPECT_THROW(compute_medial_axis(plate, params, failing_after_refining(true)), Cancelled);
+  for (const std::string at : {"sampling", "selection", "inner"}) {
+    SCOPED_TRACE(at);
+    const ComputeResult kept = compute_medial_axis(plate, params, failing_after_refining(at, false));
+    expect_same_mesh(kept.mesh, once.mesh);
+    EXPECT_EQ(kept.stats.solids.at(0).refinements, 0);
+    EXPECT_EQ(kept.stats.solids.at(0).spacing, 4.475);
+    EXPECT_EQ(kept.stats.samples, once.stats.samples);
+    EXPECT_TRUE(has_warning(kept, "sampling finer for the axis's topology failed (injected failure); the axis is "
+                                  "that of the coarser sampling"));
+    EXPECT_TRUE(has_warning(kept, "the medial axis's Euler characteristic is"));
+    EXPECT_THROW(compute_medial_axis(plate, params, failing_after_refining(at, true)), Cancelled);
+  }
 }
 
 // A solid whose axis is right at once is computed once: the same mesh as without refinement.
