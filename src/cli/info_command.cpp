@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "core/features/solid_euler.h"
 #include "core/pipeline/compute_medial_axis.h"
 #include "load_solids.h"
 
@@ -50,11 +51,14 @@ int run_info(const Args& args) {
     BRepGProp::SurfaceProperties(s, area);
     out << "  solid " << i + 1 << ": faces " << count(s, TopAbs_FACE) << ", edges " << count(s, TopAbs_EDGE)
         << ", vertices " << count(s, TopAbs_VERTEX) << ", volume " << volume.Mass() << ", area " << area.Mass()
-        << ", box " << box_text(s) << "\n";
+        << ", box " << box_text(s) << ", Euler characteristic " << solid_euler_characteristic(s)
+        << " (its medial axis's when right)\n";
   }
   out << "  bounding box: " << box_text(loaded.compound) << "\n";
   const SamplingPlan plan = plan_sampling(loaded.compound, args.params.sampling);
-  out << "  sampling plan: spacing " << plan.spacing << ", about " << plan.estimated_samples << " samples\n";
+  out << "  sampling plan: spacing " << plan.spacing << ", about " << plan.estimated_samples << " samples"
+      << (args.params.sampling.refine_topology ? ", finer for a solid whose axis comes out with another topology" : "")
+      << "\n";
   std::fputs(out.str().c_str(), stdout);
   return 0;
 }

@@ -185,8 +185,13 @@ TEST(Cli, InfoDescribesTheSolid) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("1 solid"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("faces 6, edges 12, vertices 8, volume 1,"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("box [0, 0, 0] .. [1, 1, 1]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("box [0, 0, 0] .. [1, 1, 1], Euler characteristic 1"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("sampling plan: spacing"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("finer for a solid"), std::string::npos) << r.out;  // a chosen density is kept
+  const CliRun by_default = run(dir, {"info", box_brep(dir)});
+  EXPECT_NE(by_default.out.find("samples, finer for a solid whose axis comes out with another topology"),
+            std::string::npos)
+      << by_default.out;
 }
 
 // The medial axis of the unit cube lies inside the cube; no point of it is farther than 1/2 from the
