@@ -97,6 +97,12 @@ def _flag(name, value):
     raise _core.InvalidInput("%s must be True or False, got %r" % (name, value))
 
 
+def refines_by_default(spacing, samples):
+    """Whether compute() refines for the topology when its ``refine`` is None: only when no density
+    is given (None for both), as the program does without --spacing or --samples."""
+    return spacing is None and samples is None
+
+
 def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=None,
             plain_medial=False, adapt=True, refine=None):
     """The inner medial axis of every solid of ``source``.
@@ -128,7 +134,7 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
     ValueError), GeometryError (a stage failed; also a RuntimeError) or Cancelled.
     """
     shape = read_shape(source)
-    refine = (spacing is None and samples is None) if refine is None else _flag("refine", refine)
+    refine = refines_by_default(spacing, samples) if refine is None else _flag("refine", refine)
     spacing, samples = _density(spacing, samples)
     plain_medial = _flag("plain_medial", plain_medial)
     adapt = _flag("adapt", adapt)

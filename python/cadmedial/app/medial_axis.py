@@ -24,6 +24,7 @@ import Mesh
 import Part
 
 import cadmedial
+from cadmedial.api import refines_by_default
 from cadmedial.colormap import colors_of
 
 from .registry import attach_view_provider
@@ -252,8 +253,8 @@ def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, sha
     doc = source.Document
     if "Touched" in source.State or "Invalid" in source.State:
         source.recompute()
-    if refine is None:
-        refine = not spacing and not samples  # as cadmedial.compute decides
+    if refine is None:  # 0 means "not given" here, as in compute_shape
+        refine = refines_by_default(spacing or None, samples or None)
     if result is None:
         try:
             result = compute_shape(Part.getShape(source), spacing or 0.0, samples or 0,
