@@ -24,7 +24,7 @@ const char* face_kind_name(FaceKind kind);
 /// face f has the vertices face_vertices[face_start[f] .. face_start[f+1]).
 struct MedialMesh {
   std::vector<Point3> vertices;    ///< #V positions
-  std::vector<double> radius;      ///< #V medial radius: distance to the nearest sample
+  std::vector<double> radius;      ///< #V medial radius: distance to the solid's boundary (the B-rep)
   std::vector<int> face_start{0};  ///< #F+1 offsets into face_vertices
   std::vector<int> face_vertices;  ///< vertex indices of all polygons, counter-clockwise is not implied
   std::vector<FaceKind> kind;      ///< #F

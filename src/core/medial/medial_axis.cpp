@@ -17,6 +17,7 @@
 #include "sample_votes.h"
 #include "select_facets.h"
 #include "triangulate.h"
+#include "weld_vertices.h"
 #include "../two_cores.h"
 
 namespace cadmedial {
@@ -128,6 +129,8 @@ MedialMesh medial_axis_after(const Samples& samples, const Umbrellas* ready,
   const std::vector<std::uint8_t> in = label_inside(mc, samples, umbrellas, inside, st, progress);
   report(progress, "inner", 0.7);
   MedialMesh mesh = extract_inner(mc, in, samples, solid_index, st, progress);
+  // The topology is counted on the geometry: vertices closer than coincident_cells' eps are one.
+  st.welded_vertices = weld_vertices(mesh, coincident_eps(samples.points)).merged_vertices;
   released.get();
   // The complex goes while the second core counts the mesh (each about 10 ms at 65k samples).
   on_two_cores([&] { mc = MedialComplex(); },

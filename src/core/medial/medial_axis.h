@@ -37,6 +37,7 @@ struct MedialAxisStats {
   std::size_t unattached_faces = 0;  ///< completion triangles left out: they would close a loop
   std::size_t bare_edges = 0;        ///< output edges: 1-D parts of the axis that no face carries
   long euler_characteristic = 0;     ///< V - E + F of the output faces
+  std::size_t welded_vertices = 0;   ///< output vertices within 1e-9 of the diagonal of another, merged
 };
 
 /// The inner medial axis of one solid from its samples and umbrellas. Faces get `solid_index`.

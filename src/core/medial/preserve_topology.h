@@ -9,6 +9,7 @@
 #include <array>
 #include <vector>
 
+#include "mesh_euler.h"
 #include "delaunay_3.h"
 #include "medial_axis.h"
 
@@ -31,8 +32,5 @@ AxisCells collapse_fillers(const MedialComplex& mc, const std::vector<int>& face
 /// st.unattached_faces.
 AxisCells attach_by_expansion(const MedialComplex& mc, AxisCells base, const std::vector<int>& candidates,
                               MedialAxisStats& st);
-
-/// V - E + F of a mesh, vertices and edges shared by index (isolated vertices count).
-long euler_characteristic(const MedialMesh& mesh);
 
 }  // namespace cadmedial::internal

@@ -16,10 +16,13 @@
 #include <gp_Pnt.hxx>
 
 #include "../errors.h"
+#include "../exact/boundary_distance.h"
 #include "../features/classify_features.h"
 #include "../features/solid_euler.h"
 #include "../io/read_shape.h"
 #include "../medial/medial_axis.h"
+#include "../medial/mesh_euler.h"
+#include "../medial/weld_vertices.h"
 #include "../medial/open_flat_pockets.h"
 #include "../medial/reconstruct_faces.h"
 #include "../sampling/sample_solid.h"
@@ -778,6 +781,21 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       }
       const Samples& samples = sampled[i].samples;
       MedialMesh& mesh = axis.mesh;
+      {
+        // Every radius from the B-rep: the samples' distance overstates it between samples.
+        const auto t_radii = Clock::now();
+        const ExactRadiiStats er = exact_radii(solid, i, m.diag, mesh);
+        ss.radius_max_excess = er.max_excess;
+        ss.radius_mean_excess = er.mean_excess;
+        ss.radii_corrected = er.corrected;
+        ss.vertices_moved_inside = er.moved_inside;
+        if (er.moved_inside > 0) {
+          // Moved onto the boundary, a vertex may meet another there.
+          weld_vertices(mesh, 1e-9 * std::max(m.diag, 1e-300));
+          axis.ms.euler_characteristic = euler_characteristic(mesh);
+        }
+        add_timing(stats.timings, "radii", seconds_since(t_radii));
+      }
       const MedialAxisStats& ms = axis.ms;
       ss.samples = samples.size();
       warn_of_thin_walls(axis.thin, sampled[i].field, i, n, ss, stats.warnings);
@@ -792,6 +810,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
       ss.unattached_faces = ms.unattached_faces;
       ss.euler_characteristic = ms.euler_characteristic;
       ss.exact_inside_tests = ms.exact_inside_tests;
+      ss.welded_vertices = ms.welded_vertices;
       stats.samples += ss.samples;
       stats.solids.push_back(ss);
       // The first solid's mesh is moved, not copied (one solid is the usual case).

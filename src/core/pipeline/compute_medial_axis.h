@@ -43,6 +43,14 @@ struct SolidStats {
   /// The face sample where it was found (meaningless when thinnest_wall is infinite).
   Point3 thinnest_wall_at{0, 0, 0};
   std::size_t exact_inside_tests = 0;  ///< Voronoi vertices the B-rep classifier had to settle
+  /// How far the Voronoi radii (distances to the nearest sample) were off the exact ones (the
+  /// distance to the B-rep), which the output carries: the largest and mean excess, model units,
+  /// and the vertices whose radius shrank (exact/boundary_distance.h).
+  double radius_max_excess = 0.0;
+  double radius_mean_excess = 0.0;
+  std::size_t radii_corrected = 0;
+  std::size_t vertices_moved_inside = 0;
+  std::size_t welded_vertices = 0;  ///< output vertices closer than 1e-9 of the diagonal to another, merged  ///< vertices found outside, moved onto the boundary
 };
 
 struct ComputeStats {

@@ -84,6 +84,11 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"spacing\": " + number(s.spacing);
     j += ", \"refinements\": " + std::to_string(s.refinements);
     j += ", \"exact_inside_tests\": " + std::to_string(s.exact_inside_tests);
+    j += ", \"welded_vertices\": " + std::to_string(s.welded_vertices);
+    j += ", \"radius_max_excess\": " + number(s.radius_max_excess);
+    j += ", \"radius_mean_excess\": " + number(s.radius_mean_excess);
+    j += ", \"radii_corrected\": " + std::to_string(s.radii_corrected);
+    j += ", \"vertices_moved_inside\": " + std::to_string(s.vertices_moved_inside);
     j += ", \"thinnest_wall\": " + number(s.thinnest_wall);
     // Where: null with the wall (none found).
     const bool found = std::isfinite(s.thinnest_wall);
