@@ -80,6 +80,7 @@
 
 #include "../errors.h"
 #include "../two_cores.h"
+#include "heal_shape.h"
 
 namespace cadmedial {
 namespace {
@@ -504,21 +505,58 @@ void check_geometry(const TopoDS_Shape& shape) {
 
 void run_check(const DeferredCheck& check) {
   BRepCheck_Analyzer analyzer(check.solid);
-  if (!analyzer.IsValid()) throw InvalidInput(check.name + ": " + first_check_failure(check.solid, analyzer));
+  if (!analyzer.IsValid()) throw FailedBRepCheck(check.name + ": " + first_check_failure(check.solid, analyzer));
 }
 
-// Checks a solid; returns it, reversed when its volume came out negative (faces oriented inward).
-// BRepCheck_Analyzer's check is added to `deferred` when given, else run here.
-TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name, std::vector<DeferredCheck>* deferred) {
+std::vector<TopoDS_Shell> sew_faces(const std::vector<TopoDS_Face>& faces, double relative_tolerance = 1e-6,
+                                    double* used_tolerance = nullptr);
+TopoDS_Solid solid_from_closed_shell(const TopoDS_Shell& shell);
+
+// A solid whose one shell is open (its faces do not share their edges, or a gap lies between
+// them) made of its faces sewn, at a millionth of its size as loose faces are, then at a
+// ten-thousandth: a gap that size is far below any sample spacing, and the warning says how
+// wide a gap was closed. Null when sewing does not give one closed shell.
+TopoDS_Solid sewn_solid(const TopoDS_Solid& solid, double& tolerance) {
+  std::vector<TopoDS_Face> faces;
+  for (TopExp_Explorer ex(solid, TopAbs_FACE); ex.More(); ex.Next()) faces.push_back(TopoDS::Face(ex.Current()));
+  for (double relative : {1e-6, 1e-4}) {
+    try {
+      const std::vector<TopoDS_Shell> shells = sew_faces(faces, relative, &tolerance);
+      if (shells.size() == 1) return solid_from_closed_shell(shells.front());
+      return TopoDS_Solid();  // several shells: sewing cannot tell which bound a void
+    } catch (const InvalidInput&) {
+      // still open, or non-manifold: try the wider tolerance
+    } catch (const Standard_Failure&) {
+      return TopoDS_Solid();  // sewing broke on its geometry (a curve of zero range): not healable
+    }
+  }
+  return TopoDS_Solid();
+}
+
+// The checks of `solid` but BRepCheck's: every shell closed and manifold, a positive volume.
+// Returns it, reversed when its volume came out negative (faces oriented inward), or sewn when
+// its shell was open and `may_sew` (said in `warnings`). Throws InvalidInput naming the defect.
+TopoDS_Solid closed_solid(TopoDS_Solid solid, const std::string& name, std::vector<std::string>* warnings,
+                          bool may_sew) {
   TopTools_IndexedMapOfShape edge_index;
   TopExp::MapShapes(solid, TopAbs_EDGE, edge_index);
   int nshells = 0;
+  std::string open;
   for (TopExp_Explorer sx(solid, TopAbs_SHELL); sx.More(); sx.Next()) {
     ++nshells;
-    const std::string why = open_or_nonmanifold_edge(sx.Current(), edge_index);
-    if (!why.empty()) throw InvalidInput(name + ": " + why);
+    if (open.empty()) open = open_or_nonmanifold_edge(sx.Current(), edge_index);
   }
   if (nshells == 0) throw InvalidInput(name + ": has no shell (an empty solid)");
+  if (!open.empty()) {
+    double tolerance = 0;
+    const TopoDS_Solid sewn = may_sew && nshells == 1 ? sewn_solid(solid, tolerance) : TopoDS_Solid();
+    if (sewn.IsNull()) throw InvalidInput(name + ": " + open);
+    solid = closed_solid(sewn, name, nullptr, false);
+    if (warnings)
+      warnings->push_back(name + ": " + open + "; closed by sewing its faces (gaps up to " + message_number(tolerance) +
+                          " joined)");
+    return solid;
+  }
 
   // Orientation first: an inside-out solid (negative volume) is fixed by reversing it, and only
   // then checked, so that BRepCheck does not refuse it for its orientation.
@@ -530,11 +568,47 @@ TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name, std::vec
   if (!std::isfinite(volume) || std::abs(volume) <= tiny)
     throw InvalidInput(name + ": has zero volume (flat, or partly inside out)");
   if (volume < 0) solid.Reverse();
+  return solid;
+}
 
-  if (deferred)
-    deferred->push_back({solid, name});
-  else
-    run_check({solid, name});
+// `solid` if BRepCheck_Analyzer finds it valid, else what ShapeFix makes of it if that is valid,
+// closed and of the same size (said in `warnings`); else throws InvalidInput with BRepCheck's
+// first complaint about the solid as given.
+TopoDS_Solid valid_solid(const TopoDS_Solid& solid, const std::string& name, std::vector<std::string>* warnings) {
+  const BRepCheck_Analyzer analyzer(solid);
+  if (analyzer.IsValid()) return solid;
+  const std::string failure = name + ": " + first_check_failure(solid, analyzer);
+  const HealedSolid healed = heal_solid(solid);
+  std::string why_not = healed.fixes;
+  if (!healed.solid.IsNull()) {
+    try {
+      const TopoDS_Solid fixed = closed_solid(healed.solid, name, nullptr, false);
+      const BRepCheck_Analyzer again(fixed);
+      const double d = diagonal(solid), d_fixed = diagonal(fixed);
+      if (!again.IsValid()) {
+        why_not = "still invalid after ShapeFix: " + first_check_failure(fixed, again);
+      } else if (!(std::abs(d_fixed - d) <= 1e-3 * d)) {
+        // Healing that moved the part's extent changed the part, not its representation.
+        why_not = "ShapeFix changed its size (diagonal " + message_number(d) + " to " + message_number(d_fixed) + ")";
+      } else {
+        if (warnings)
+          warnings->push_back(failure + "; healed by ShapeFix" + (healed.fixes.empty() ? "" : " (" + healed.fixes + ")"));
+        return fixed;
+      }
+    } catch (const InvalidInput& e) {
+      why_not = std::string("ShapeFix left it broken: ") + e.what();
+    }
+  }
+  throw InvalidInput(failure + "; ShapeFix cannot heal it" + (why_not.empty() ? "" : " (" + why_not + ")"));
+}
+
+// Checks a solid, healing it where OpenCASCADE can (closed_solid, valid_solid). BRepCheck_Analyzer's
+// check is added to `deferred` when given, else run here.
+TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name, std::vector<DeferredCheck>* deferred,
+                           std::vector<std::string>* warnings) {
+  solid = closed_solid(solid, name, warnings, true);
+  if (!deferred) return valid_solid(solid, name, warnings);
+  deferred->push_back({solid, name});
   return solid;
 }
 
@@ -570,8 +644,10 @@ void collect(const TopoDS_Shape& shape, Parts& parts) {
   }
 }
 
-// Shells made by sewing the loose faces; throws when they do not close.
-std::vector<TopoDS_Shell> sew_faces(const std::vector<TopoDS_Face>& faces) {
+// Shells made by sewing the loose faces; throws when they do not close. `relative_tolerance` is
+// against the faces' diagonal; the tolerance used goes to `used_tolerance` when given.
+std::vector<TopoDS_Shell> sew_faces(const std::vector<TopoDS_Face>& faces, double relative_tolerance,
+                                    double* used_tolerance) {
   BRep_Builder builder;
   TopoDS_Compound all;
   builder.MakeCompound(all);
@@ -583,7 +659,8 @@ std::vector<TopoDS_Shell> sew_faces(const std::vector<TopoDS_Face>& faces) {
   }
   // The files' own tolerance (IGES readers set it from the file's resolution), and at least a
   // millionth of the size: gaps below that are round-off of the exporter, not holes.
-  const double tol = std::max({1e-7, 1e-6 * diagonal(all), 2.0 * max_tol});
+  const double tol = std::max({1e-7, relative_tolerance * diagonal(all), 2.0 * max_tol});
+  if (used_tolerance) *used_tolerance = tol;
   BRepBuilderAPI_Sewing sewing(tol);
   for (const TopoDS_Face& f : faces) sewing.Add(f);
   sewing.Perform();
@@ -662,7 +739,7 @@ TopoDS_Shape read_brep_string(const std::string& text) {
 namespace {
 
 std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped,
-                                         std::vector<DeferredCheck>* deferred) {
+                                         std::vector<DeferredCheck>* deferred, std::vector<std::string>* warnings) {
   if (shape.IsNull()) throw InvalidInput("the shape is empty (null)");
   enable_reader_fault_recovery();
   try {
@@ -675,8 +752,22 @@ std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<
 
     std::vector<TopoDS_Solid> solids;
     std::vector<std::string> open_parts;  // refused only when nothing else is there
-    for (std::size_t i = 0; i < parts.solids.size(); ++i)
-      solids.push_back(checked_solid(parts.solids[i], "solid " + std::to_string(solids.size() + 1), deferred));
+    // Solids that cannot be healed: skipped beside others (an assembly with one empty solid is
+    // still the other parts), refused when they are all there is. Each is numbered among all
+    // the shape's solids, as FreeCAD numbers them, whether or not an earlier one was skipped.
+    std::vector<std::string> rejected;
+    int candidates = 0;
+    auto add = [&](const TopoDS_Solid& solid, const std::string& origin) {
+      const std::string name = "solid " + std::to_string(++candidates) + origin;
+      try {
+        solids.push_back(checked_solid(solid, name, deferred, warnings));
+      } catch (const FailedBRepCheck&) {
+        throw;
+      } catch (const InvalidInput& e) {
+        rejected.push_back(e.what());
+      }
+    };
+    for (std::size_t i = 0; i < parts.solids.size(); ++i) add(parts.solids[i], "");
 
     // Shells that are not inside a solid: each must be closed; then it becomes a solid. STEP
     // exporters often write a part as a shell whose faces do not share their edges (each face has
@@ -697,25 +788,26 @@ std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<
           continue;
         }
         for (const TopoDS_Shell& shell : sewn)
-          solids.push_back(checked_solid(solid_from_closed_shell(shell), "solid " + std::to_string(solids.size() + 1) +
-                                                                           " (sewn from shell " + std::to_string(i + 1) + ")",
-                                         deferred));
+          add(solid_from_closed_shell(shell), " (sewn from shell " + std::to_string(i + 1) + ")");
         continue;
       }
-      solids.push_back(checked_solid(solid_from_closed_shell(parts.shells[i]),
-                                     "solid " + std::to_string(solids.size() + 1) + " (made from shell " +
-                                         std::to_string(i + 1) + ")",
-                                     deferred));
+      add(solid_from_closed_shell(parts.shells[i]), " (made from shell " + std::to_string(i + 1) + ")");
     }
 
     if (!parts.faces.empty()) {
       try {
-        for (const TopoDS_Shell& shell : sew_faces(parts.faces))
-          solids.push_back(checked_solid(solid_from_closed_shell(shell),
-                                         "solid " + std::to_string(solids.size() + 1) + " (sewn from loose faces)", deferred));
+        for (const TopoDS_Shell& shell : sew_faces(parts.faces)) add(solid_from_closed_shell(shell), " (sewn from loose faces)");
+      } catch (const FailedBRepCheck&) {
+        throw;
       } catch (const InvalidInput& e) {
         open_parts.push_back(e.what());
       }
+    }
+    if (!rejected.empty()) {
+      if (solids.empty()) throw InvalidInput(rejected.front());
+      if (warnings)
+        for (const std::string& why : rejected)
+          warnings->push_back(why + "; skipped: the axis is that of the other solids (the result numbers them without it)");
     }
     if (!open_parts.empty()) {
       if (solids.empty()) throw InvalidInput(open_parts.front());
@@ -741,13 +833,14 @@ std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<
 
 }  // namespace
 
-std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped) {
-  return extract_solids(shape, skipped, nullptr);
+std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped,
+                                         std::vector<std::string>* warnings) {
+  return extract_solids(shape, skipped, nullptr, warnings);
 }
 
 std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped,
-                                         std::vector<DeferredCheck>& deferred) {
-  return extract_solids(shape, skipped, &deferred);
+                                         std::vector<DeferredCheck>& deferred, std::vector<std::string>* warnings) {
+  return extract_solids(shape, skipped, &deferred, warnings);
 }
 
 void run_deferred_checks(const std::vector<DeferredCheck>& checks) {
