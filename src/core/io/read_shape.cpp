@@ -514,8 +514,8 @@ TopoDS_Solid solid_from_closed_shell(const TopoDS_Shell& shell);
 
 // A solid whose one shell is open (its faces do not share their edges, or a gap lies between
 // them) made of its faces sewn, at a millionth of its size as loose faces are, then at a
-// ten-thousandth: a gap that size is far below any sample spacing, and the warning says how
-// wide a gap was closed. Null when sewing does not give one closed shell.
+// ten-thousandth: a gap that size is far below any sample spacing, and the warning gives the
+// tolerance that closed it. Null when sewing does not give one closed shell.
 TopoDS_Solid sewn_solid(const TopoDS_Solid& solid, double& tolerance) {
   std::vector<TopoDS_Face> faces;
   for (TopExp_Explorer ex(solid, TopAbs_FACE); ex.More(); ex.Next()) faces.push_back(TopoDS::Face(ex.Current()));
@@ -553,8 +553,7 @@ TopoDS_Solid closed_solid(TopoDS_Solid solid, const std::string& name, std::vect
     if (sewn.IsNull()) throw InvalidInput(name + ": " + open);
     solid = closed_solid(sewn, name, nullptr, false);
     if (warnings)
-      warnings->push_back(name + ": " + open + "; closed by sewing its faces (gaps up to " + message_number(tolerance) +
-                          " joined)");
+      warnings->push_back(name + ": " + open + "; closed by sewing its faces (tolerance " + message_number(tolerance) + ")");
     return solid;
   }
 
