@@ -533,11 +533,15 @@ TopoDS_Solid sewn_solid(const TopoDS_Solid& solid, double& tolerance) {
   return TopoDS_Solid();
 }
 
+TopoDS_Solid healed_or_refused(const TopoDS_Solid& solid, const std::string& name, const std::string& failure,
+                               std::vector<std::string>* warnings);
+
 // The checks of `solid` but BRepCheck's: every shell closed and manifold, a positive volume.
-// Returns it, reversed when its volume came out negative (faces oriented inward), or sewn when
-// its shell was open and `may_sew` (said in `warnings`). Throws InvalidInput naming the defect.
+// Returns it, reversed when its volume came out negative (faces oriented inward). When `may_heal`,
+// a solid whose shell is open is sewn, and one whose volume is zero (half of it inside out) is
+// given to ShapeFix, each said in `warnings`. Throws InvalidInput naming the defect.
 TopoDS_Solid closed_solid(TopoDS_Solid solid, const std::string& name, std::vector<std::string>* warnings,
-                          bool may_sew) {
+                          bool may_heal) {
   TopTools_IndexedMapOfShape edge_index;
   TopExp::MapShapes(solid, TopAbs_EDGE, edge_index);
   int nshells = 0;
@@ -549,7 +553,7 @@ TopoDS_Solid closed_solid(TopoDS_Solid solid, const std::string& name, std::vect
   if (nshells == 0) throw InvalidInput(name + ": has no shell (an empty solid)");
   if (!open.empty()) {
     double tolerance = 0;
-    const TopoDS_Solid sewn = may_sew && nshells == 1 ? sewn_solid(solid, tolerance) : TopoDS_Solid();
+    const TopoDS_Solid sewn = may_heal && nshells == 1 ? sewn_solid(solid, tolerance) : TopoDS_Solid();
     if (sewn.IsNull()) throw InvalidInput(name + ": " + open);
     solid = closed_solid(sewn, name, nullptr, false);
     if (warnings)
@@ -562,21 +566,22 @@ TopoDS_Solid closed_solid(TopoDS_Solid solid, const std::string& name, std::vect
   const double volume = signed_volume(solid);
   const double d = diagonal(solid);
   // Relative to the box: a volume this small against d^3 is a flat shape, or one whose parts
-  // cancel out (half of it inside out).
+  // cancel out (half of it inside out: ShapeFix may orient its faces as one).
   const double tiny = 1e-12 * d * d * d;
-  if (!std::isfinite(volume) || std::abs(volume) <= tiny)
-    throw InvalidInput(name + ": has zero volume (flat, or partly inside out)");
+  if (!std::isfinite(volume) || std::abs(volume) <= tiny) {
+    const std::string failure = name + ": has zero volume (flat, or partly inside out)";
+    if (!may_heal) throw InvalidInput(failure);
+    return healed_or_refused(solid, name, failure, warnings);
+  }
   if (volume < 0) solid.Reverse();
   return solid;
 }
 
-// `solid` if BRepCheck_Analyzer finds it valid, else what ShapeFix makes of it if that is valid,
-// closed and of the same size (said in `warnings`); else throws InvalidInput with BRepCheck's
-// first complaint about the solid as given.
-TopoDS_Solid valid_solid(const TopoDS_Solid& solid, const std::string& name, std::vector<std::string>* warnings) {
-  const BRepCheck_Analyzer analyzer(solid);
-  if (analyzer.IsValid()) return solid;
-  const std::string failure = name + ": " + first_check_failure(solid, analyzer);
+// What ShapeFix makes of `solid` (refused for `failure`, which names it) if that is one solid,
+// closed, valid for BRepCheck and of the same size; said in `warnings`. Else throws InvalidInput
+// with `failure` and why it could not be healed.
+TopoDS_Solid healed_or_refused(const TopoDS_Solid& solid, const std::string& name, const std::string& failure,
+                               std::vector<std::string>* warnings) {
   const HealedSolid healed = heal_solid(solid);
   std::string why_not = healed.fixes;
   if (!healed.solid.IsNull()) {
@@ -595,10 +600,19 @@ TopoDS_Solid valid_solid(const TopoDS_Solid& solid, const std::string& name, std
         return fixed;
       }
     } catch (const InvalidInput& e) {
-      why_not = std::string("ShapeFix left it broken: ") + e.what();
+      const std::string what = e.what(), prefix = name + ": ";
+      why_not = "ShapeFix left it broken: " + (what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what);
     }
   }
   throw InvalidInput(failure + "; ShapeFix cannot heal it" + (why_not.empty() ? "" : " (" + why_not + ")"));
+}
+
+// `solid` if BRepCheck_Analyzer finds it valid, else healed_or_refused with BRepCheck's first
+// complaint about the solid as given.
+TopoDS_Solid valid_solid(const TopoDS_Solid& solid, const std::string& name, std::vector<std::string>* warnings) {
+  const BRepCheck_Analyzer analyzer(solid);
+  if (analyzer.IsValid()) return solid;
+  return healed_or_refused(solid, name, name + ": " + first_check_failure(solid, analyzer), warnings);
 }
 
 // Checks a solid, healing it where OpenCASCADE can (closed_solid, valid_solid). BRepCheck_Analyzer's

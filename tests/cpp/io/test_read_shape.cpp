@@ -484,6 +484,16 @@ TEST(ExtractSolids, SolidOpenByAWideGapIsRefused) {
   EXPECT_CONTAINS(why, "is bounded by 1 face (the shell is open)");
 }
 
+TEST(ExtractSolids, SolidWithHalfItsFacesInsideOutIsHealedWithAWarning) {
+  // Faces x max, y max, z max reversed: the volume sums to zero, and ShapeFix orients the shell.
+  std::vector<std::string> warnings;
+  const auto solids = extract_solids(test::box_with_reversed_faces(10, 8, 6, 0b101010), nullptr, &warnings);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 480.0, 1e-6);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_CONTAINS(warnings[0], "solid 1: has zero volume (flat, or partly inside out); healed by ShapeFix");
+}
+
 TEST(ExtractSolids, FaceReversedInItsShellIsHealedWithAWarning) {
   std::vector<std::string> warnings;
   const auto solids = extract_solids(test::box_with_reversed_face(10, 20, 30, 5), nullptr, &warnings);

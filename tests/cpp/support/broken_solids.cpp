@@ -14,7 +14,7 @@
 namespace cadmedial::test {
 namespace {
 
-TopoDS_Solid rebuilt_box(double a, double b, double c, int which, bool reversed, double gap) {
+TopoDS_Solid rebuilt_box(double a, double b, double c, int which, unsigned reversed, double gap) {
   const TopoDS_Shape box = BRepPrimAPI_MakeBox(a, b, c).Shape();
   BRep_Builder builder;
   TopoDS_Shell shell;
@@ -22,7 +22,7 @@ TopoDS_Solid rebuilt_box(double a, double b, double c, int which, bool reversed,
   int i = 0;
   for (TopExp_Explorer fx(box, TopAbs_FACE); fx.More(); fx.Next(), ++i) {
     TopoDS_Shape f = fx.Current();
-    if (i == which && reversed) f.Reverse();
+    if (reversed & (1u << i)) f.Reverse();
     if (i == which && gap != 0) {
       const int axis = which / 2;
       gp_Trsf t;
@@ -37,11 +37,15 @@ TopoDS_Solid rebuilt_box(double a, double b, double c, int which, bool reversed,
 }  // namespace
 
 TopoDS_Solid box_with_reversed_face(double a, double b, double c, int which) {
-  return rebuilt_box(a, b, c, which, true, 0.0);
+  return rebuilt_box(a, b, c, which, 1u << which, 0.0);
+}
+
+TopoDS_Solid box_with_reversed_faces(double a, double b, double c, unsigned mask) {
+  return rebuilt_box(a, b, c, -1, mask, 0.0);
 }
 
 TopoDS_Solid box_with_gap(double a, double b, double c, int which, double gap) {
-  return rebuilt_box(a, b, c, which, false, gap);
+  return rebuilt_box(a, b, c, which, 0u, gap);
 }
 
 TopoDS_Shape box_with_vertex_off_its_edges(double a, double b, double c) {

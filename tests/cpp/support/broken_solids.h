@@ -11,6 +11,9 @@ namespace cadmedial::test {
 /// order: x min, x max, y min, y max, z min, z max) reversed in its shell: BRepCheck refuses the
 /// shell's orientation (BRepCheck_BadOrientationOfSubshape).
 TopoDS_Solid box_with_reversed_face(double a, double b, double c, int which);
+/// The same with every face whose bit is set in `mask` (bit i: face i) reversed. Three faces of a
+/// box reversed cancel its volume (each face spans a sixth of it from the centre).
+TopoDS_Solid box_with_reversed_faces(double a, double b, double c, unsigned mask);
 /// The same box with face `which` moved by `gap` along its own normal axis, onto edges of its own:
 /// the shell is open by `gap` all round that face.
 TopoDS_Solid box_with_gap(double a, double b, double c, int which, double gap);
