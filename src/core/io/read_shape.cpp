@@ -625,6 +625,44 @@ TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name, std::vec
   return solid;
 }
 
+// check_geometry on `shape`; when it refuses a shape of several solids, on each of them: returns,
+// per solid of `solids`, "" or why its own geometry is refused (its edges numbered over it).
+// Throws check_geometry's refusal when the shape is one solid, or when the defect is not in the
+// solids (a shell or face beside them), so that what was refused before still is.
+std::vector<std::string> solids_with_broken_geometry(const TopoDS_Shape& shape, const std::vector<TopoDS_Solid>& solids,
+                                                     const std::vector<TopoDS_Shell>& shells,
+                                                     const std::vector<TopoDS_Face>& faces) {
+  std::vector<std::string> why(solids.size());
+  try {
+    check_geometry(shape);
+    return why;
+  } catch (const InvalidInput&) {
+    if (solids.size() < 2) throw;
+    bool in_a_solid = false;
+    for (std::size_t i = 0; i < solids.size(); ++i) {
+      try {
+        check_geometry(solids[i]);
+      } catch (const InvalidInput& e) {
+        why[i] = e.what();
+        in_a_solid = true;
+      }
+    }
+    BRep_Builder builder;
+    TopoDS_Compound rest;
+    builder.MakeCompound(rest);
+    for (const TopoDS_Shell& s : shells) builder.Add(rest, s);
+    for (const TopoDS_Face& f : faces) builder.Add(rest, f);
+    bool rest_sane = true;
+    try {
+      check_geometry(rest);
+    } catch (const InvalidInput&) {
+      rest_sane = false;
+    }
+    if (!in_a_solid || !rest_sane) throw;
+  }
+  return why;
+}
+
 TopoDS_Solid solid_from_closed_shell(const TopoDS_Shell& shell) {
   // ShapeFix_Solid::SolidFromShell orients the shell so that the solid has its material inside.
   ShapeFix_Solid fix;
@@ -759,9 +797,11 @@ std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<
     // A fault inside OpenCASCADE on broken geometry (sewing or checking a shape that the reader
     // left half-built) becomes a Standard_Failure, caught below (see enable_reader_fault_recovery).
     OCC_CATCH_SIGNALS
-    check_geometry(shape);
     Parts parts;
     collect(shape, parts);
+    // Geometry no check may touch (the messages number its edges over the whole shape); in an
+    // assembly, only the solids that hold it are left out (below).
+    const std::vector<std::string> broken = solids_with_broken_geometry(shape, parts.solids, parts.shells, parts.faces);
 
     std::vector<TopoDS_Solid> solids;
     std::vector<std::string> open_parts;  // refused only when nothing else is there
@@ -780,7 +820,13 @@ std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<
         rejected.push_back(e.what());
       }
     };
-    for (std::size_t i = 0; i < parts.solids.size(); ++i) add(parts.solids[i], "");
+    for (std::size_t i = 0; i < parts.solids.size(); ++i) {
+      if (broken[i].empty()) {
+        add(parts.solids[i], "");
+      } else {
+        rejected.push_back("solid " + std::to_string(++candidates) + ": " + broken[i]);
+      }
+    }
 
     // Shells that are not inside a solid: each must be closed; then it becomes a solid. STEP
     // exporters often write a part as a shell whose faces do not share their edges (each face has

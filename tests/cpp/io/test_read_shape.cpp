@@ -511,6 +511,26 @@ TEST(ExtractSolids, VertexFarFromItsCurveEndsIsRefusedBeforeBRepCheck) {
   EXPECT_CONTAINS(why, "'s curve does not end at its vertex: 0.374166 away, tolerance 1e-07");
 }
 
+// In an assembly, only the solid whose geometry the cheap checks refuse is left out; its edges
+// are numbered over it, as FreeCAD numbers them.
+TEST(ExtractSolids, SolidWithBrokenGeometryBesideAnotherIsSkipped) {
+  const TopoDS_Shape bad = BRepPrimAPI_MakeBox(gp_Pnt(5, 0, 0), 1, 1, 1).Shape();
+  const TopoDS_Vertex v = TopoDS::Vertex(TopExp_Explorer(bad, TopAbs_VERTEX).Current());
+  BRep_Builder().UpdateVertex(v, BRep_Tool::Pnt(v).Translated(gp_Vec(0.3, 0.2, 0.1)), 1e-7);
+  const std::string alone = refusal([&] { extract_solids(bad); });
+  BRep_Builder b;
+  TopoDS_Compound two;
+  b.MakeCompound(two);
+  b.Add(two, box());
+  b.Add(two, bad);
+  std::vector<std::string> warnings;
+  const auto solids = extract_solids(two, nullptr, &warnings);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].rfind("solid 2: " + alone + "; skipped", 0), 0u) << warnings[0];
+}
+
 TEST(ExtractSolids, CurveOnFaceAwayFromTheEdgeIsRefusedBeforeBRepCheck) {
   // One edge's curve on one of its faces moved by 0.5 in that face's parameter plane.
   const TopoDS_Shape shape = BRepPrimAPI_MakeBox(1, 1, 1).Shape();
