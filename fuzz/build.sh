@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds fuzz/build/fuzz_read_brep with clang-14 and libFuzzer + AddressSanitizer + UBSan. Separate
-# from the CMake build: it compiles the one core source the target needs (src/core/io/read_shape.cpp)
-# and links OpenCASCADE's (uninstrumented) libraries.
+# from the CMake build: it compiles the core sources the target needs (reading, checking, healing
+# in src/core/io/) and links OpenCASCADE's (uninstrumented) libraries.
 set -euo pipefail
 cd "$(dirname "$0")"
 mkdir -p build
@@ -10,5 +10,6 @@ FLAGS=(-std=c++17 -g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer,address,undef
        -Wno-deprecated-declarations -I../src -I/usr/include/opencascade)
 LIBS=(-lTKernel -lTKMath -lTKG2d -lTKG3d -lTKGeomBase -lTKBRep -lTKGeomAlgo -lTKTopAlgo -lTKPrim
       -lTKBO -lTKShHealing -lTKMesh -lTKXSBase -lTKSTEPBase -lTKSTEPAttr -lTKSTEP209 -lTKSTEP -lTKIGES)
-"$CXX" "${FLAGS[@]}" fuzz_read_brep.cpp ../src/core/io/read_shape.cpp -o build/fuzz_read_brep "${LIBS[@]}"
+IO=(read_shape extract_solids check_solid check_geometry heal_shape shape_text)
+"$CXX" "${FLAGS[@]}" fuzz_read_brep.cpp $(printf "../src/core/io/%s.cpp " "${IO[@]}") -o build/fuzz_read_brep "${LIBS[@]}"
 echo "built fuzz/build/fuzz_read_brep"

@@ -339,6 +339,24 @@ def test_a_loose_face_beside_the_solid_is_skipped_with_a_warning(doc, capfd):
     assert points[:, 2].max() <= 30.0 + 1e-9
 
 
+@pytest.mark.parametrize("name, fragment, solids", [
+    ("reversed_face.brep", "healed by ShapeFix", 1),
+    ("assembly_with_empty_solid.brep", "solid 3: has no shell (an empty solid); skipped", 3),
+])
+def test_healed_or_skipped_solid_is_reported_as_a_warning(doc, capfd, name, fragment, solids):
+    # What the engine heals or skips (tests/data/bad/README.md) reaches the report view, and the
+    # axis is computed from what is left.
+    part = doc.addObject("Part::Feature", "Healable")
+    part.Shape = Part.read(os.path.join(BAD_DATA, name))
+    doc.recompute()
+    capfd.readouterr()
+    feature = medial_app.make_medial_axis(part, samples=SAMPLES)
+    out, err = capfd.readouterr()
+    assert feature.Status == "ok"
+    assert fragment in out + err
+    assert len(medial_app.medial_result(feature).stats["solids"]) == solids
+
+
 MODELS = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir, os.pardir,
                                       "shared", "data", "models"))
 

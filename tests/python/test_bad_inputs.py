@@ -138,6 +138,44 @@ def test_sliver_face_narrower_than_the_spacing():
     assert np.all(result.vertices[:, 2] <= 10.001 + 1e-9)
 
 
+# ---- inputs that are healed: computed, with a warning saying what was fixed or skipped ---------
+
+# file, what the warning must say, the box(es) of the healed solid(s): (x0, sides)
+HEALED = [
+    ("reversed_face.brep", "shell 1 is invalid (BRepCheck_BadOrientationOfSubshape); healed by ShapeFix",
+     [(0.0, [10, 20, 30])]),
+    ("gap_of_0.001.brep", "is bounded by 1 face (the shell is open) near (10.001, 0, 15); closed by sewing",
+     [(0.0, [10.001, 20, 30])]),
+    ("assembly_with_empty_solid.brep", "solid 3: has no shell (an empty solid); skipped",
+     [(0.0, [10, 10, 10]), (10.0, [10, 10, 10]), (20.0, [10, 10, 10])]),
+]
+
+
+@pytest.mark.parametrize("name, fragment, boxes", HEALED, ids=[h[0] for h in HEALED])
+def test_python_heals_and_warns(name, fragment, boxes):
+    result = cadmedial.compute(bad(name), samples=SAMPLES)
+    assert any(fragment in w for w in result.stats["warnings"]), result.stats["warnings"]
+    assert sorted(set(result.face_solid.tolist())) == list(range(len(boxes)))
+    tol = 2.5 * result.stats["spacing"]
+    for solid, (x0, sides) in enumerate(boxes):
+        assert result.stats["solids"][solid]["euler_characteristic"] == 1
+        faces = [f for f, s in zip(result.faces, result.face_solid) if s == solid]
+        used = np.unique(np.concatenate([np.asarray(f) for f in faces]))
+        pts, r = result.vertices[used] - [x0, 0, 0], result.radius[used]
+        assert r.max() == pytest.approx(min(sides) / 2, abs=tol)
+        assert np.all(pts >= -1e-6) and np.all(pts <= np.asarray(sides) + 1e-6)
+
+
+@pytest.mark.parametrize("name, fragment, boxes", HEALED, ids=[h[0] for h in HEALED])
+def test_cli_heals_and_warns(cli, tmp_path, name, fragment, boxes):
+    out = tmp_path / "axis.ply"
+    run = run_cli(cli, "compute", bad(name), "-o", str(out), "--samples", str(SAMPLES), "--quiet")
+    assert run.returncode == 0, run.stderr
+    warnings = [line for line in run.stderr.splitlines() if line.startswith("cadmedial: warning: ")]
+    assert any(fragment in w for w in warnings), run.stderr
+    assert cadmedial.load(out).radius.max() == pytest.approx(min(min(b[1]) for b in boxes) / 2, rel=0.2)
+
+
 # ---- parameters --------------------------------------------------------------------------------
 
 NAN, INF = float("nan"), float("inf")

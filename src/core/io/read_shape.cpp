@@ -1,15 +1,4 @@
-// Reading STEP / IGES / BREP into a shape, and turning a shape into checked, closed solids.
-//
-// What extract_solids accepts, and why:
-// - solids (also inside compounds and compsolids): checked as they are;
-// - closed shells that are not solids: made solids (BRepBuilderAPI_MakeSolid, ShapeFix_Solid for
-//   the orientation), since STEP/IGES exports often stop at the shell;
-// - loose faces (IGES often holds only faces): sewn together; every shell that sewing makes must be
-//   closed, or the whole shape is refused: a face left out would silently change the medial axis;
-// - loose wires, edges and vertices (construction geometry): ignored, they bound no volume. When the
-//   shape holds nothing else, the "no solid" message counts them so the user sees what was there.
-// Edge, face and vertex numbers in messages are 1-based indices of TopExp::MapShapes over the solid
-// (or shell), which is the numbering FreeCAD shows as Edge12, Face3, ...
+// Reading STEP / IGES / BREP into a shape.
 // OpenCASCADE's Linux build defines this; without it OCC_CATCH_SIGNALS (below) is empty and a fault
 // caught by OSD's handler aborts the process instead of becoming a Standard_Failure. It must come
 // before any OpenCASCADE header.
@@ -18,104 +7,31 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <ios>
+#include <mutex>
 #include <new>
 #include <sstream>
 
 #include <signal.h>
 
-#include <mutex>
-
-#include <BRepBndLib.hxx>
-#include <BRepBuilderAPI_MakeSolid.hxx>
-#include <BRepBuilderAPI_Sewing.hxx>
-#include <BRepCheck.hxx>
-#include <BRepCheck_Analyzer.hxx>
-#include <BRepCheck_ListOfStatus.hxx>
-#include <BRepCheck_Result.hxx>
-#include <BRepGProp_Domain.hxx>
-#include <BRepGProp_Face.hxx>
-#include <BRepGProp_Vinert.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
-#include <BRep_Tool.hxx>
-#include <Bnd_Box.hxx>
 #include <IGESControl_Reader.hxx>
 #include <OSD.hxx>
 #include <STEPControl_Reader.hxx>
-#include <ShapeFix_Solid.hxx>
 #include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
-#include <TopExp.hxx>
-#include <TopExp_Explorer.hxx>
-#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
-#include <TopTools_IndexedMapOfShape.hxx>
-#include <TopTools_ListOfShape.hxx>
-#include <TopoDS.hxx>
-#include <TopoDS_Iterator.hxx>
-#include <TopoDS_Compound.hxx>
-#include <TopoDS_Edge.hxx>
-#include <TopoDS_Face.hxx>
-#include <TopoDS_Shell.hxx>
-#include <TopoDS_Vertex.hxx>
-#include <Geom_Curve.hxx>
-#include <BRep_CurveRepresentation.hxx>
-#include <BRep_GCurve.hxx>
-#include <BRep_ListOfCurveRepresentation.hxx>
-#include <BRep_TEdge.hxx>
-#include <Geom2d_Conic.hxx>
-#include <Geom2d_Curve.hxx>
-#include <Geom2d_Line.hxx>
-#include <Geom2d_TrimmedCurve.hxx>
-#include <Geom_Conic.hxx>
-#include <Geom_ElementarySurface.hxx>
-#include <Geom_Line.hxx>
-#include <Geom_OffsetSurface.hxx>
-#include <Geom_RectangularTrimmedSurface.hxx>
-#include <Geom_Surface.hxx>
-#include <Geom_TrimmedCurve.hxx>
 
 #include "../errors.h"
-#include "../two_cores.h"
+#include "shape_text.h"
 
 namespace cadmedial {
-namespace {
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
+using internal::failure_text;
 
-std::string failure_text(const Standard_Failure& e) {
-  const char* m = e.GetMessageString();
-  std::string text = (m && *m) ? m : "";
-  std::string type = e.DynamicType()->Name();
-  return text.empty() ? type : type + ": " + text;
-}
-
-std::string point_text(const gp_Pnt& p) {
-  std::ostringstream s;
-  s.precision(6);
-  s << "(" << p.X() << ", " << p.Y() << ", " << p.Z() << ")";
-  return s.str();
-}
-
-// Midpoint of an edge's 3D curve, to tell the user where a bad edge is.
-std::string edge_location(const TopoDS_Edge& edge) {
-  try {
-    double first = 0, last = 0;
-    Handle(Geom_Curve) curve = BRep_Tool::Curve(edge, first, last);
-    if (curve.IsNull()) return "";
-    return " near " + point_text(curve->Value(0.5 * (first + last)));
-  } catch (const Standard_Failure&) {
-    return "";
-  }
-}
-
-// ---- reading --------------------------------------------------------------------------------
+namespace internal {
 
 // OpenCASCADE's readers guard their geometry parsing with OCC_CATCH_SIGNALS (GeomTools_*Set::Read*:
 // an offset curve whose basis is unknown dereferences null, and the reader catches that and goes
@@ -134,6 +50,17 @@ void enable_reader_fault_recovery() {
     OSD::SetSignal(false);
     for (std::size_t i = 0; i < sizeof keep / sizeof keep[0]; ++i) ::sigaction(keep[i], &saved[i], nullptr);
   });
+}
+
+}  // namespace internal
+
+namespace {
+
+using internal::enable_reader_fault_recovery;
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
 }
 
 TopoDS_Shape read_step(const std::string& path) {
@@ -197,414 +124,6 @@ TopoDS_Shape read_brep_file(const std::string& path) {
   return shape;
 }
 
-// ---- checking -------------------------------------------------------------------------------
-
-// Every edge of a closed 2-manifold shell is used twice: by two faces, or twice by one face
-// (the seam of a periodic surface). Degenerate edges (a sphere's pole) are used once and are fine.
-// Returns "" or the reason the shell is not closed, with an edge number from `edge_index`.
-std::string open_or_nonmanifold_edge(const TopoDS_Shape& shell, const TopTools_IndexedMapOfShape& edge_index) {
-  TopTools_IndexedMapOfShape edges;
-  std::vector<int> uses;
-  std::vector<TopTools_IndexedMapOfShape> faces_of;
-  for (TopExp_Explorer fx(shell, TopAbs_FACE); fx.More(); fx.Next()) {
-    for (TopExp_Explorer ex(fx.Current(), TopAbs_EDGE); ex.More(); ex.Next()) {
-      const int i = edges.Add(ex.Current());
-      if (i > static_cast<int>(uses.size())) {
-        uses.push_back(0);
-        faces_of.emplace_back();
-      }
-      ++uses[i - 1];
-      faces_of[i - 1].Add(fx.Current());
-    }
-  }
-  for (int i = 1; i <= edges.Extent(); ++i) {
-    const TopoDS_Edge& edge = TopoDS::Edge(edges(i));
-    if (BRep_Tool::Degenerated(edge)) continue;
-    const int nfaces = faces_of[i - 1].Extent();
-    const int n = uses[i - 1];
-    if (n == 2) continue;
-    const std::string name = "edge " + std::to_string(edge_index.FindIndex(edge));
-    if (n < 2)
-      return name + " is bounded by 1 face (the shell is open)" + edge_location(edge);
-    return name + " is bounded by " + std::to_string(nfaces) + " faces (non-manifold)" + edge_location(edge);
-  }
-  return "";
-}
-
-std::string status_name(BRepCheck_Status status) {
-  std::ostringstream s;
-  BRepCheck::Print(status, s);
-  std::string text = s.str();
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-  return text;
-}
-
-// The first defect BRepCheck_Analyzer found on a sub-shape of `solid`, as "vertex 3 is invalid
-// (BRepCheck_...)", smallest sub-shapes first since a bad vertex also makes its edges and faces
-// invalid. A defect can be recorded on the shape itself or "in the context" of a larger one (a
-// vertex that is off its edge's curve): both are looked at.
-std::string first_check_failure(const TopoDS_Shape& solid, const BRepCheck_Analyzer& analyzer) {
-  auto first_error = [](const BRepCheck_ListOfStatus& list) {
-    for (BRepCheck_ListOfStatus::Iterator it(list); it.More(); it.Next())
-      if (it.Value() != BRepCheck_NoError) return it.Value();
-    return BRepCheck_NoError;
-  };
-  const std::pair<TopAbs_ShapeEnum, const char*> kinds[] = {
-      {TopAbs_VERTEX, "vertex"}, {TopAbs_EDGE, "edge"}, {TopAbs_WIRE, "wire"},
-      {TopAbs_FACE, "face"},     {TopAbs_SHELL, "shell"}};
-  for (const auto& [type, type_name] : kinds) {
-    TopTools_IndexedMapOfShape subs;
-    TopExp::MapShapes(solid, type, subs);
-    for (int i = 1; i <= subs.Extent(); ++i) {
-      Handle(BRepCheck_Result) result;
-      try {
-        result = analyzer.Result(subs(i));
-      } catch (const Standard_Failure&) {
-        continue;  // not analysed (the analyzer keeps only what it reached)
-      }
-      if (result.IsNull()) continue;
-      BRepCheck_Status status = first_error(result->Status());
-      for (result->InitContextIterator(); status == BRepCheck_NoError && result->MoreShapeInContext();
-           result->NextShapeInContext())
-        status = first_error(result->StatusOnShape());
-      if (status == BRepCheck_NoError) continue;
-      std::string where;
-      if (type == TopAbs_EDGE) where = edge_location(TopoDS::Edge(subs(i)));
-      if (type == TopAbs_VERTEX) where = " at " + point_text(BRep_Tool::Pnt(TopoDS::Vertex(subs(i))));
-      return std::string(type_name) + " " + std::to_string(i) + " is invalid (" + status_name(status) + ")" + where;
-    }
-  }
-  return "the solid is invalid (BRepCheck_Analyzer names no sub-shape)";
-}
-
-// The solid's volume as BRepGProp::VolumeProperties computes it (each face's Gauss integral from
-// the mean of the vertices), the two cores taking the next face in turn: on B-spline-rich parts this
-// was half the set-up (NIST CTC 02: 0.13 s of 0.27 on one core). A fault on the second thread is
-// caught there as on this one.
-double signed_volume(const TopoDS_Solid& solid) {
-  std::vector<TopoDS_Face> faces;
-  for (TopExp_Explorer ex(solid, TopAbs_FACE); ex.More(); ex.Next()) faces.push_back(TopoDS::Face(ex.Current()));
-  gp_XYZ mean(0, 0, 0);
-  int nv = 0;
-  for (TopExp_Explorer ex(solid, TopAbs_VERTEX); ex.More(); ex.Next(), ++nv)
-    mean += BRep_Tool::Pnt(TopoDS::Vertex(ex.Current())).XYZ();
-  if (nv > 0) mean /= nv;
-  std::vector<double> volume(faces.size(), 0.0);
-  internal::on_two_cores_each(faces.size(), [&](std::size_t k) {
-    OCC_CATCH_SIGNALS
-    const TopoDS_Face& f = faces[k];
-    const TopAbs_Orientation o = f.Orientation();
-    TopLoc_Location loc;
-    if ((o != TopAbs_FORWARD && o != TopAbs_REVERSED) || BRep_Tool::Surface(f, loc).IsNull()) return;
-    BRepGProp_Vinert inertia;
-    inertia.SetLocation(gp_Pnt(mean));
-    BRepGProp_Face face(f);
-    if (f.NbChildren() == 0) {
-      inertia.Perform(face);
-    } else {
-      BRepGProp_Domain domain(f);
-      inertia.Perform(face, domain);
-    }
-    volume[k] = inertia.Mass();
-  });
-  double sum = 0;
-  for (double v : volume) sum += v;  // in face order, as one pass
-  return sum;
-}
-
-double diagonal(const TopoDS_Shape& shape) {
-  Bnd_Box box;
-  BRepBndLib::Add(shape, box);
-  if (box.IsVoid()) return 0.0;
-  return std::sqrt(box.SquareExtent());
-}
-
-// ---- geometry sanity ------------------------------------------------------------------------
-//
-// OpenCASCADE's release build does not check gp_Dir's norm (Standard_ConstructionError is compiled
-// out), so BREP text can hand it a plane with a zero normal, a line with a zero direction or NaN
-// coordinates; BRepCheck_Analyzer then dereferences null results and crashes (SIGSEGV in
-// BRepCheck_Edge::InContext, found by fuzz/fuzz_read_brep.cpp). These cheap checks refuse such
-// geometry first.
-
-bool unit(const gp_XYZ& d) { return std::isfinite(d.Modulus()) && std::abs(d.Modulus() - 1.0) < 1e-6; }
-bool unit(const gp_XY& d) { return std::isfinite(d.Modulus()) && std::abs(d.Modulus() - 1.0) < 1e-6; }
-bool finite(const gp_XYZ& p) { return std::isfinite(p.X()) && std::isfinite(p.Y()) && std::isfinite(p.Z()); }
-bool finite(const gp_XY& p) { return std::isfinite(p.X()) && std::isfinite(p.Y()); }
-
-bool sane(const gp_Ax3& a) {
-  return finite(a.Location().XYZ()) && unit(a.Direction().XYZ()) && unit(a.XDirection().XYZ()) &&
-         unit(a.YDirection().XYZ()) && std::abs(a.Direction().XYZ().Dot(a.XDirection().XYZ())) < 1e-6;
-}
-bool sane(const gp_Ax2& a) {
-  return finite(a.Location().XYZ()) && unit(a.Direction().XYZ()) && unit(a.XDirection().XYZ()) &&
-         unit(a.YDirection().XYZ()) && std::abs(a.Direction().XYZ().Dot(a.XDirection().XYZ())) < 1e-6;
-}
-
-bool sane_surface(Handle(Geom_Surface) s) {
-  for (int depth = 0; depth < 16 && !s.IsNull(); ++depth) {
-    if (auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(s)) s = t->BasisSurface();
-    else if (auto o = Handle(Geom_OffsetSurface)::DownCast(s)) {
-      if (!std::isfinite(o->Offset())) return false;
-      s = o->BasisSurface();
-    } else break;
-  }
-  if (s.IsNull()) return false;
-  if (auto e = Handle(Geom_ElementarySurface)::DownCast(s)) return sane(e->Position());
-  return true;
-}
-
-bool sane_curve(Handle(Geom_Curve) c) {
-  for (int depth = 0; depth < 16 && !c.IsNull(); ++depth) {
-    auto t = Handle(Geom_TrimmedCurve)::DownCast(c);
-    if (t.IsNull()) break;
-    c = t->BasisCurve();
-  }
-  if (c.IsNull()) return false;
-  if (auto l = Handle(Geom_Line)::DownCast(c))
-    return finite(l->Position().Location().XYZ()) && unit(l->Position().Direction().XYZ());
-  if (auto k = Handle(Geom_Conic)::DownCast(c)) return sane(k->Position());
-  return true;
-}
-
-bool sane_curve(Handle(Geom2d_Curve) c) {
-  for (int depth = 0; depth < 16 && !c.IsNull(); ++depth) {
-    auto t = Handle(Geom2d_TrimmedCurve)::DownCast(c);
-    if (t.IsNull()) break;
-    c = t->BasisCurve();
-  }
-  if (c.IsNull()) return false;
-  if (auto l = Handle(Geom2d_Line)::DownCast(c))
-    return finite(l->Position().Location().XY()) && unit(l->Position().Direction().XY());
-  if (auto k = Handle(Geom2d_Conic)::DownCast(c)) {
-    const gp_Ax22d a = k->Position();
-    return finite(a.Location().XY()) && unit(a.XDirection().XY()) && unit(a.YDirection().XY());
-  }
-  return true;
-}
-
-// ---- curve ends -----------------------------------------------------------------------------
-//
-// BRepCheck_Analyzer refuses an edge whose 3D curve does not end at its vertices (BRepCheck_Vertex:
-// farther than max(vertex, edge tolerance), InvalidPointOnCurve) or whose curve on a face strays
-// from the 3D curve (BRepCheck_Edge: InvalidCurveOnSurface, sampled from end to end). But it checks
-// the wires first, and on mangled BREP (tests/data/bad/fuzz-slow/: a 1e-6 box whose pcurves lie 10
-// away, or whose range became 3) BRepCheck_Wire::SelfIntersect runs for minutes. The same two
-// conditions, at the curve ends only, cost microseconds per edge: refuse on them first. The factor
-// keeps this strictly looser than BRepCheck (it refuses from 1 x the tolerance), so no shape that
-// BRepCheck accepts is refused here.
-constexpr double kEndSlack = 10.0;
-
-// "" or why edge `e` (numbered `index`) has a curve that does not end where it should; `faces`
-// are the faces that hold it (BRepCheck checks the curves on those faces only).
-std::string curve_end_defect(const TopoDS_Edge& e, int index, const TopTools_ListOfShape& faces) {
-  if (BRep_Tool::Degenerated(e)) return "";
-  double first = 0, last = 0;
-  const Handle(Geom_Curve) curve = BRep_Tool::Curve(e, first, last);  // with the edge's location
-  if (curve.IsNull()) return "";  // BRepCheck refuses an edge without a 3D curve on its own
-  TopoDS_Vertex first_vertex, last_vertex;
-  TopExp::Vertices(TopoDS::Edge(e.Oriented(TopAbs_FORWARD)), first_vertex, last_vertex);
-  double tol = BRep_Tool::Tolerance(e);
-  for (const TopoDS_Vertex& v : {first_vertex, last_vertex})
-    if (!v.IsNull()) tol = std::max(tol, BRep_Tool::Tolerance(v));
-  const double allowed = kEndSlack * tol;
-  const std::string name = "edge " + std::to_string(index);
-
-  const gp_Pnt end3d[2] = {curve->Value(first), curve->Value(last)};
-  const TopoDS_Vertex ends[2] = {first_vertex, last_vertex};
-  for (int k = 0; k < 2; ++k) {
-    if (ends[k].IsNull()) continue;
-    const double d = end3d[k].Distance(BRep_Tool::Pnt(ends[k]));
-    if (!(d <= allowed))
-      return name + "'s curve does not end at its vertex: " + message_number(d) + " away, tolerance " +
-             message_number(tol) + edge_location(e);
-  }
-  // Its curve on each face, at the ends of its own range (the 3D curve's range on a valid edge:
-  // BRepCheck refuses an edge that is not SameRange). A seam has one per orientation.
-  for (TopTools_ListOfShape::Iterator it(faces); it.More(); it.Next()) {
-    const TopoDS_Face face = TopoDS::Face(it.Value());
-    const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);  // with the face's location
-    if (surface.IsNull()) continue;
-    for (TopAbs_Orientation o : {TopAbs_FORWARD, TopAbs_REVERSED}) {
-      double f = 0, l = 0;
-      const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(TopoDS::Edge(e.Oriented(o)), face, f, l);
-      if (pc.IsNull()) continue;
-      const double params[2] = {f, l};
-      for (int k = 0; k < 2; ++k) {
-        const gp_Pnt2d uv = pc->Value(params[k]);
-        const double d = surface->Value(uv.X(), uv.Y()).Distance(end3d[k]);
-        if (!(d <= allowed))
-          return name + "'s curve on a face strays from its 3D curve: " + message_number(d) +
-                 " apart at an end, tolerance " + message_number(tol) + edge_location(e);
-      }
-    }
-  }
-  return "";
-}
-
-// Throws InvalidInput naming the first face, edge or vertex (numbered over `shape`) whose geometry
-// is degenerate or not finite, or whose curves do not meet at their ends (above).
-void check_geometry(const TopoDS_Shape& shape) {
-  TopTools_IndexedMapOfShape subs;
-  TopExp::MapShapes(shape, TopAbs_VERTEX, subs);
-  for (int i = 1; i <= subs.Extent(); ++i) {
-    const TopoDS_Vertex& v = TopoDS::Vertex(subs(i));
-    if (!finite(BRep_Tool::Pnt(v).XYZ()) || !std::isfinite(BRep_Tool::Tolerance(v)))
-      throw InvalidInput("vertex " + std::to_string(i) + " has a coordinate or tolerance that is not a finite number");
-  }
-  subs.Clear();
-  TopExp::MapShapes(shape, TopAbs_EDGE, subs);
-  for (int i = 1; i <= subs.Extent(); ++i) {
-    const TopoDS_Edge& e = TopoDS::Edge(subs(i));
-    const auto* tedge = dynamic_cast<const BRep_TEdge*>(e.TShape().get());
-    if (!tedge) throw InvalidInput("edge " + std::to_string(i) + " is not an edge");
-    for (BRep_ListOfCurveRepresentation::Iterator it(tedge->Curves()); it.More(); it.Next()) {
-      const Handle(BRep_CurveRepresentation)& cr = it.Value();
-      bool ok = true;
-      if (auto g = Handle(BRep_GCurve)::DownCast(cr)) {
-        double first = 0, last = 0;
-        g->Range(first, last);
-        ok = std::isfinite(first) && std::isfinite(last);
-      }
-      if (ok && cr->IsCurve3D()) ok = cr->Curve3D().IsNull() || sane_curve(cr->Curve3D());
-      if (ok && cr->IsCurveOnSurface()) {
-        ok = sane_curve(cr->PCurve()) && sane_surface(cr->Surface());
-        if (ok && cr->IsCurveOnClosedSurface()) ok = sane_curve(cr->PCurve2());
-      }
-      if (!ok)
-        throw InvalidInput("edge " + std::to_string(i) + " has a degenerate curve (a zero direction, or a number that is not finite)");
-    }
-  }
-  subs.Clear();
-  TopExp::MapShapes(shape, TopAbs_FACE, subs);
-  for (int i = 1; i <= subs.Extent(); ++i) {
-    TopLoc_Location loc;
-    const Handle(Geom_Surface)& surface = BRep_Tool::Surface(TopoDS::Face(subs(i)), loc);
-    if (surface.IsNull()) throw InvalidInput("face " + std::to_string(i) + " has no surface");
-    if (!sane_surface(surface))
-      throw InvalidInput("face " + std::to_string(i) + " has a degenerate surface (a zero axis, or a number that is not finite)");
-  }
-  // Only now that every curve and surface can be evaluated.
-  subs.Clear();
-  TopExp::MapShapes(shape, TopAbs_EDGE, subs);  // the numbering of the messages above
-  TopTools_IndexedDataMapOfShapeListOfShape edge_faces;
-  TopExp::MapShapesAndAncestors(shape, TopAbs_EDGE, TopAbs_FACE, edge_faces);
-  for (int i = 1; i <= edge_faces.Extent(); ++i) {
-    const TopoDS_Edge& e = TopoDS::Edge(edge_faces.FindKey(i));
-    std::string why;
-    try {
-      why = curve_end_defect(e, subs.FindIndex(e), edge_faces(i));
-    } catch (const Standard_Failure&) {
-      // A curve this check cannot evaluate (an edge of zero range projected on its plane): BRepCheck
-      // and the shell checks will say what is wrong.
-    }
-    if (!why.empty()) throw InvalidInput(why);
-  }
-}
-
-void run_check(const DeferredCheck& check) {
-  BRepCheck_Analyzer analyzer(check.solid);
-  if (!analyzer.IsValid()) throw InvalidInput(check.name + ": " + first_check_failure(check.solid, analyzer));
-}
-
-// Checks a solid; returns it, reversed when its volume came out negative (faces oriented inward).
-// BRepCheck_Analyzer's check is added to `deferred` when given, else run here.
-TopoDS_Solid checked_solid(TopoDS_Solid solid, const std::string& name, std::vector<DeferredCheck>* deferred) {
-  TopTools_IndexedMapOfShape edge_index;
-  TopExp::MapShapes(solid, TopAbs_EDGE, edge_index);
-  int nshells = 0;
-  for (TopExp_Explorer sx(solid, TopAbs_SHELL); sx.More(); sx.Next()) {
-    ++nshells;
-    const std::string why = open_or_nonmanifold_edge(sx.Current(), edge_index);
-    if (!why.empty()) throw InvalidInput(name + ": " + why);
-  }
-  if (nshells == 0) throw InvalidInput(name + ": has no shell (an empty solid)");
-
-  // Orientation first: an inside-out solid (negative volume) is fixed by reversing it, and only
-  // then checked, so that BRepCheck does not refuse it for its orientation.
-  const double volume = signed_volume(solid);
-  const double d = diagonal(solid);
-  // Relative to the box: a volume this small against d^3 is a flat shape, or one whose parts
-  // cancel out (half of it inside out).
-  const double tiny = 1e-12 * d * d * d;
-  if (!std::isfinite(volume) || std::abs(volume) <= tiny)
-    throw InvalidInput(name + ": has zero volume (flat, or partly inside out)");
-  if (volume < 0) solid.Reverse();
-
-  if (deferred)
-    deferred->push_back({solid, name});
-  else
-    run_check({solid, name});
-  return solid;
-}
-
-TopoDS_Solid solid_from_closed_shell(const TopoDS_Shell& shell) {
-  // ShapeFix_Solid::SolidFromShell orients the shell so that the solid has its material inside.
-  ShapeFix_Solid fix;
-  TopoDS_Solid solid = fix.SolidFromShell(shell);
-  if (solid.IsNull()) solid = BRepBuilderAPI_MakeSolid(shell).Solid();
-  return solid;
-}
-
-// What a shape holds at its top level (inside compounds), sorted by kind.
-struct Parts {
-  std::vector<TopoDS_Solid> solids;
-  std::vector<TopoDS_Shell> shells;
-  std::vector<TopoDS_Face> faces;
-  int loose_wires = 0, loose_edges = 0, loose_vertices = 0;
-};
-
-void collect(const TopoDS_Shape& shape, Parts& parts) {
-  switch (shape.ShapeType()) {
-    case TopAbs_COMPOUND:
-    case TopAbs_COMPSOLID:
-      for (TopoDS_Iterator it(shape); it.More(); it.Next()) collect(it.Value(), parts);
-      break;
-    case TopAbs_SOLID: parts.solids.push_back(TopoDS::Solid(shape)); break;
-    case TopAbs_SHELL: parts.shells.push_back(TopoDS::Shell(shape)); break;
-    case TopAbs_FACE: parts.faces.push_back(TopoDS::Face(shape)); break;
-    case TopAbs_WIRE: ++parts.loose_wires; break;
-    case TopAbs_EDGE: ++parts.loose_edges; break;
-    case TopAbs_VERTEX: ++parts.loose_vertices; break;
-    default: break;
-  }
-}
-
-// Shells made by sewing the loose faces; throws when they do not close.
-std::vector<TopoDS_Shell> sew_faces(const std::vector<TopoDS_Face>& faces) {
-  BRep_Builder builder;
-  TopoDS_Compound all;
-  builder.MakeCompound(all);
-  double max_tol = 0.0;
-  for (const TopoDS_Face& f : faces) {
-    builder.Add(all, f);
-    for (TopExp_Explorer vx(f, TopAbs_VERTEX); vx.More(); vx.Next())
-      max_tol = std::max(max_tol, BRep_Tool::Tolerance(TopoDS::Vertex(vx.Current())));
-  }
-  // The files' own tolerance (IGES readers set it from the file's resolution), and at least a
-  // millionth of the size: gaps below that are round-off of the exporter, not holes.
-  const double tol = std::max({1e-7, 1e-6 * diagonal(all), 2.0 * max_tol});
-  BRepBuilderAPI_Sewing sewing(tol);
-  for (const TopoDS_Face& f : faces) sewing.Add(f);
-  sewing.Perform();
-  const bool one = faces.size() == 1;
-  const std::string what = std::to_string(faces.size()) + (one ? " loose face" : " loose faces");
-  if (sewing.NbFreeEdges() > 0)
-    throw InvalidInput(what + " (not in any solid or shell)" + (one ? " does" : " do") + " not sew into closed shells: " +
-                       std::to_string(sewing.NbFreeEdges()) + " edges stay open, e.g. one" +
-                       edge_location(sewing.FreeEdge(1)));
-  if (sewing.NbMultipleEdges() > 0)
-    throw InvalidInput(what + " (not in any solid or shell) sew into a non-manifold shape: " +
-                       std::to_string(sewing.NbMultipleEdges()) + " edges have more than two faces, e.g. one" +
-                       edge_location(sewing.MultipleEdge(1)));
-  Parts sewn;
-  collect(sewing.SewedShape(), sewn);
-  if (!sewn.faces.empty())
-    throw InvalidInput(what + " (not in any solid or shell): " + std::to_string(sewn.faces.size()) +
-                       " face(s) do not join any other after sewing");
-  return sewn.shells;
-}
-
 }  // namespace
 
 TopoDS_Shape read_shape_file(const std::string& path) {
@@ -656,107 +175,6 @@ TopoDS_Shape read_brep_string(const std::string& text) {
     return shape;
   } catch (const Standard_Failure& e) {
     throw InvalidInput("BREP text: does not parse: " + failure_text(e));
-  }
-}
-
-namespace {
-
-std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped,
-                                         std::vector<DeferredCheck>* deferred) {
-  if (shape.IsNull()) throw InvalidInput("the shape is empty (null)");
-  enable_reader_fault_recovery();
-  try {
-    // A fault inside OpenCASCADE on broken geometry (sewing or checking a shape that the reader
-    // left half-built) becomes a Standard_Failure, caught below (see enable_reader_fault_recovery).
-    OCC_CATCH_SIGNALS
-    check_geometry(shape);
-    Parts parts;
-    collect(shape, parts);
-
-    std::vector<TopoDS_Solid> solids;
-    std::vector<std::string> open_parts;  // refused only when nothing else is there
-    for (std::size_t i = 0; i < parts.solids.size(); ++i)
-      solids.push_back(checked_solid(parts.solids[i], "solid " + std::to_string(solids.size() + 1), deferred));
-
-    // Shells that are not inside a solid: each must be closed; then it becomes a solid. STEP
-    // exporters often write a part as a shell whose faces do not share their edges (each face has
-    // its own copy): sewing closes such a shell, and only a shell that stays open is refused.
-    for (std::size_t i = 0; i < parts.shells.size(); ++i) {
-      TopTools_IndexedMapOfShape edge_index;
-      TopExp::MapShapes(parts.shells[i], TopAbs_EDGE, edge_index);
-      const std::string why = open_or_nonmanifold_edge(parts.shells[i], edge_index);
-      if (!why.empty()) {
-        std::vector<TopoDS_Face> faces;
-        for (TopExp_Explorer ex(parts.shells[i], TopAbs_FACE); ex.More(); ex.Next()) faces.push_back(TopoDS::Face(ex.Current()));
-        std::vector<TopoDS_Shell> sewn;
-        try {
-          sewn = sew_faces(faces);
-        } catch (const InvalidInput&) {
-          const std::string msg = "shell " + std::to_string(i + 1) + " (not a solid): " + why + "; sewing does not close it";
-          open_parts.push_back(msg);
-          continue;
-        }
-        for (const TopoDS_Shell& shell : sewn)
-          solids.push_back(checked_solid(solid_from_closed_shell(shell), "solid " + std::to_string(solids.size() + 1) +
-                                                                           " (sewn from shell " + std::to_string(i + 1) + ")",
-                                         deferred));
-        continue;
-      }
-      solids.push_back(checked_solid(solid_from_closed_shell(parts.shells[i]),
-                                     "solid " + std::to_string(solids.size() + 1) + " (made from shell " +
-                                         std::to_string(i + 1) + ")",
-                                     deferred));
-    }
-
-    if (!parts.faces.empty()) {
-      try {
-        for (const TopoDS_Shell& shell : sew_faces(parts.faces))
-          solids.push_back(checked_solid(solid_from_closed_shell(shell),
-                                         "solid " + std::to_string(solids.size() + 1) + " (sewn from loose faces)", deferred));
-      } catch (const InvalidInput& e) {
-        open_parts.push_back(e.what());
-      }
-    }
-    if (!open_parts.empty()) {
-      if (solids.empty()) throw InvalidInput(open_parts.front());
-      if (skipped) skipped->insert(skipped->end(), open_parts.begin(), open_parts.end());
-    }
-
-    if (solids.empty()) {
-      std::string held;
-      auto count = [&held](int n, const char* one, const char* many) {
-        if (n == 0) return;
-        held += (held.empty() ? "" : ", ") + std::to_string(n) + " " + (n == 1 ? one : many);
-      };
-      count(parts.loose_wires, "loose wire", "loose wires");
-      count(parts.loose_edges, "loose edge", "loose edges");
-      count(parts.loose_vertices, "loose vertex", "loose vertices");
-      throw InvalidInput("holds no solid, closed shell or face" + (held.empty() ? std::string() : " (only " + held + ")"));
-    }
-    return solids;
-  } catch (const Standard_Failure& e) {
-    throw InvalidInput("checking the solids failed: " + failure_text(e));
-  }
-}
-
-}  // namespace
-
-std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped) {
-  return extract_solids(shape, skipped, nullptr);
-}
-
-std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped,
-                                         std::vector<DeferredCheck>& deferred) {
-  return extract_solids(shape, skipped, &deferred);
-}
-
-void run_deferred_checks(const std::vector<DeferredCheck>& checks) {
-  enable_reader_fault_recovery();
-  try {
-    OCC_CATCH_SIGNALS
-    for (const DeferredCheck& check : checks) run_check(check);
-  } catch (const Standard_Failure& e) {
-    throw InvalidInput("checking the solids failed: " + failure_text(e));
   }
 }
 

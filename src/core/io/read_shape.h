@@ -1,4 +1,5 @@
-// Reading CAD files into OpenCASCADE shapes, and extracting the valid closed solids of a shape.
+// Reading CAD files into OpenCASCADE shapes. (extract_solids.h, included here for the callers that
+// have always found it here, extracts the valid closed solids of a shape.)
 #pragma once
 
 #include <string>
@@ -6,6 +7,8 @@
 
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Solid.hxx>
+
+#include "extract_solids.h"
 
 namespace cadmedial {
 
@@ -17,24 +20,10 @@ TopoDS_Shape read_shape_file(const std::string& path);
 /// Throws InvalidInput when the text does not parse or holds no shape.
 TopoDS_Shape read_brep_string(const std::string& text);
 
-/// The solids of a shape, in TopExp_Explorer order. Closed shells that are not yet solids are made
-/// solids; every solid is checked (BRepCheck_Analyzer, closedness, positive volume).
-/// Throws InvalidInput saying which solid, face or edge is wrong, or that there is no solid.
-/// Open shells and faces that stay open after sewing are refused when they are all the shape
-/// holds; beside at least one solid they are construction surfaces: skipped, and described in
-/// `skipped` when given.
-std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped = nullptr);
-
-/// A solid whose BRepCheck_Analyzer run extract_solids left for later: that run is most of its
-/// time, and the pipeline does it on its second thread while CGAL triangulates.
-struct DeferredCheck {
-  TopoDS_Solid solid;
-  std::string name;  ///< as extract_solids' messages name the solid ("solid 2 (made from shell 1)")
-};
-/// extract_solids with every check but BRepCheck_Analyzer's done; those are added to `deferred`.
-std::vector<TopoDS_Solid> extract_solids(const TopoDS_Shape& shape, std::vector<std::string>* skipped,
-                                         std::vector<DeferredCheck>& deferred);
-/// Throws the InvalidInput that extract_solids would have thrown for the first invalid solid.
-void run_deferred_checks(const std::vector<DeferredCheck>& checks);
+namespace internal {
+/// Installs OpenCASCADE's fault handlers once (SIGSEGV and the like become Standard_Failure
+/// inside OCC_CATCH_SIGNALS), keeping the job-control signals' handlers.
+void enable_reader_fault_recovery();
+}  // namespace internal
 
 }  // namespace cadmedial

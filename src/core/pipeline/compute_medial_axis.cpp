@@ -29,6 +29,7 @@
 #include "../sampling/spacing_field.h"
 #include "../sampling/thin_walls.h"
 #include "../two_cores.h"
+#include "compute_as_given.h"
 #include "exact_inside_test.h"
 
 namespace cadmedial {
@@ -638,7 +639,7 @@ std::vector<Samples> sample_shape(const TopoDS_Shape& shape, const SamplingParam
   return out;
 }
 
-ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams& params, const Progress& progress) {
+ComputeResult compute_as_given(const TopoDS_Shape& shape, const ComputeParams& params, const Progress& progress) {
   check_params(params);
   const auto t_total = Clock::now();
   ComputeResult result;
@@ -649,7 +650,7 @@ ComputeResult compute_medial_axis(const TopoDS_Shape& shape, const ComputeParams
     // BRepCheck_Analyzer, most of the set-up's time, runs on the second thread while CGAL
     // triangulates the first solid (that core is idle then); the other checks run here.
     std::vector<DeferredCheck> checks;
-    const std::vector<TopoDS_Solid> solids = extract_solids(shape, &stats.skipped, checks);
+    const std::vector<TopoDS_Solid> solids = extract_solids(shape, &stats.skipped, checks, &stats.warnings);
     add_timing(stats.timings, "setup", seconds_since(t0));
     const int n = static_cast<int>(solids.size());
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
@@ -32,6 +33,8 @@
 #include "core/errors.h"
 #include "core/pipeline/compute_medial_axis.h"
 #include "io/io_test_files.h"
+#include "support/broken_solids.h"
+#include "support/solids.h"
 
 namespace cadmedial {
 namespace {
@@ -363,45 +366,141 @@ TEST(ExtractSolids, LooseFaceAloneIsRefused) {
   EXPECT_CONTAINS(refusal([&] { extract_solids(face); }), "1 loose face");
 }
 
+// tests/data/bad/self_intersecting.brep: a prism on a bow-tie quadrilateral. BRepCheck names the
+// wire; ShapeFix cannot heal it, and the refusal says so.
 TEST(ExtractSolids, BRepCheckFailureNamesTheSubShape) {
-  // Moving a vertex of a box off its edges' ends by 3.7 times its tolerance breaks the B-rep for
-  // BRepCheck (it allows 1 x), and stays under the cheap curve-end check (10 x), which runs first.
-  const TopoDS_Shape shape = BRepPrimAPI_MakeBox(1, 1, 1).Shape();
-  const TopoDS_Vertex v = TopoDS::Vertex(TopExp_Explorer(shape, TopAbs_VERTEX).Current());
-  BRep_Builder().UpdateVertex(v, BRep_Tool::Pnt(v).Translated(gp_Vec(3e-7, 2e-7, 1e-7)), 1e-7);
-  const std::string why = refusal([&] { extract_solids(shape); });
-  EXPECT_CONTAINS(why, "solid 1: ");
-  EXPECT_CONTAINS(why, "is invalid (BRepCheck_");
+  const std::string path = std::string(CADMEDIAL_SOURCE_DIR) + "/tests/data/bad/self_intersecting.brep";
+  const std::string why = refusal([&] { extract_solids(read_shape_file(path)); });
+  EXPECT_CONTAINS(why, "solid 1: wire 5 is invalid (BRepCheck_SelfIntersectingWire)");
+  EXPECT_CONTAINS(why, "; ShapeFix cannot heal it");
+}
+
+// Moving a vertex of a box off its edges' ends by 3.7 times its tolerance breaks the B-rep for
+// BRepCheck (it allows 1 x), and stays under the cheap curve-end check (10 x), which runs first.
+// ShapeFix mends it (it widens the tolerance); the warning names what BRepCheck found.
+TEST(ExtractSolids, BRepCheckFailureThatShapeFixHealsIsAWarning) {
+  const TopoDS_Shape shape = test::box_with_vertex_off_its_edges(1, 1, 1);
+  std::vector<std::string> warnings;
+  const auto solids = extract_solids(shape, nullptr, &warnings);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_TRUE(BRepCheck_Analyzer(solids[0]).IsValid());
+  EXPECT_NEAR(volume(solids[0]), 1.0, 1e-5);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_CONTAINS(warnings[0], "solid 1: vertex 1 is invalid (BRepCheck_InvalidPointOnCurve)");
+  EXPECT_CONTAINS(warnings[0], "; healed by ShapeFix");
 }
 
 // The pipeline defers BRepCheck to its second thread: the solid comes out unchecked, and the
-// deferred check refuses it with the eager one's words; the pipeline as a whole refuses it too.
-TEST(ExtractSolids, DeferredBRepCheckRefusesAsTheEagerOne) {
-  const TopoDS_Shape shape = BRepPrimAPI_MakeBox(1, 1, 1).Shape();
-  const TopoDS_Vertex v = TopoDS::Vertex(TopExp_Explorer(shape, TopAbs_VERTEX).Current());
-  BRep_Builder().UpdateVertex(v, BRep_Tool::Pnt(v).Translated(gp_Vec(3e-7, 2e-7, 1e-7)), 1e-7);
-  const std::string eager = refusal([&] { extract_solids(shape); });
+// deferred check throws FailedBRepCheck with the eager check's words (which the eager one, healing,
+// puts in its warning); the pipeline then computes the healed solid with that warning.
+TEST(ExtractSolids, DeferredBRepCheckThrowsWhatTheEagerOneHeals) {
+  const TopoDS_Shape shape = test::box_with_vertex_off_its_edges(1, 1, 1);
+  std::vector<std::string> warnings;
+  extract_solids(shape, nullptr, &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
   std::vector<DeferredCheck> checks;
   EXPECT_EQ(extract_solids(shape, nullptr, checks).size(), 1u);
   ASSERT_EQ(checks.size(), 1u);
-  EXPECT_EQ(refusal([&] { run_deferred_checks(checks); }), eager);
+  try {
+    run_deferred_checks(checks);
+    ADD_FAILURE() << "expected FailedBRepCheck";
+  } catch (const FailedBRepCheck& e) {
+    EXPECT_EQ(warnings[0].rfind(std::string(e.what()) + "; healed by ShapeFix", 0), 0u) << e.what();
+  }
   ComputeParams params;
   params.sampling.target_samples = 2000;
-  EXPECT_EQ(refusal([&] { compute_medial_axis(shape, params); }), eager);
-  // In a compound the first solid's triangulation checks them all: the second one is refused.
+  const ComputeResult one = compute_medial_axis(shape, params);
+  EXPECT_EQ(one.stats.solids.size(), 1u);
+  ASSERT_FALSE(one.stats.warnings.empty());
+  EXPECT_EQ(one.stats.warnings[0], warnings[0]);
+  // In a compound the first solid's triangulation checks them all: the second one is healed.
   BRep_Builder b;
   TopoDS_Compound two;
   b.MakeCompound(two);
   b.Add(two, BRepPrimAPI_MakeBox(gp_Pnt(5, 0, 0), 1, 2, 3).Shape());
   b.Add(two, shape);
-  const std::string second = refusal([&] { extract_solids(two); });
-  EXPECT_CONTAINS(second, "solid 2: ");
-  EXPECT_EQ(refusal([&] { compute_medial_axis(two, params); }), second);
+  const ComputeResult both = compute_medial_axis(two, params);
+  EXPECT_EQ(both.stats.solids.size(), 2u);
+  ASSERT_FALSE(both.stats.warnings.empty());
+  EXPECT_CONTAINS(both.stats.warnings[0], "solid 2: vertex 1 is invalid");
   // A valid solid passes its deferred check.
   checks.clear();
   extract_solids(BRepPrimAPI_MakeBox(1, 2, 3).Shape(), nullptr, checks);
   ASSERT_EQ(checks.size(), 1u);
   EXPECT_NO_THROW(run_deferred_checks(checks));
+}
+
+TEST(ExtractSolids, EmptySolidBesideOthersIsSkippedWithAWarningNamingIt) {
+  const TopoDS_Shape shape = test::make_compound(
+      {test::make_box(1, 1, 1), test::empty_solid(), BRepPrimAPI_MakeBox(gp_Pnt(1, 0, 0), 1, 1, 1).Solid()});
+  std::vector<std::string> warnings;
+  const auto solids = extract_solids(shape, nullptr, &warnings);
+  ASSERT_EQ(solids.size(), 2u);
+  EXPECT_NEAR(volume(solids[0]) + volume(solids[1]), 2.0, 1e-9);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_CONTAINS(warnings[0], "solid 2: has no shell (an empty solid); skipped");
+}
+
+TEST(ExtractSolids, ZeroVolumeSolidBesideABoxIsSkipped) {
+  const TopoDS_Face square = BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 5), gp_Dir(0, 0, 1)), 0, 1, 0, 1).Face();
+  BRep_Builder b;
+  TopoDS_Shell shell;
+  b.MakeShell(shell);
+  b.Add(shell, square);
+  b.Add(shell, square.Reversed());
+  const TopoDS_Shape shape = test::make_compound({BRepBuilderAPI_MakeSolid(shell).Solid(), test::make_box(1, 2, 3)});
+  std::vector<std::string> warnings;
+  const auto solids = extract_solids(shape, nullptr, &warnings);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_CONTAINS(warnings[0], "solid 1: has zero volume");
+}
+
+// Nothing computable left: refused with the first bad solid's words, as before healing.
+TEST(ExtractSolids, OnlyBadSolidsAreRefusedWithTheFirstOnesWords) {
+  EXPECT_EQ(refusal([] { extract_solids(test::empty_solid()); }), "solid 1: has no shell (an empty solid)");
+  const std::string why = refusal([] { extract_solids(test::make_compound({test::empty_solid(), test::empty_solid()})); });
+  EXPECT_EQ(why, "solid 1: has no shell (an empty solid)");
+}
+
+TEST(ExtractSolids, SolidOpenByASmallGapIsSewnWithAWarning) {
+  // 0.001 on a box of diagonal 37: closed at a ten-thousandth of it.
+  std::vector<std::string> warnings;
+  const auto solids = extract_solids(test::box_with_gap(10, 20, 30, 1, 0.001), nullptr, &warnings);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_TRUE(BRepCheck_Analyzer(solids[0]).IsValid());
+  EXPECT_NEAR(volume(solids[0]), 6000.0, 6000.0 * 1e-3);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_CONTAINS(warnings[0], "solid 1: edge ");
+  EXPECT_CONTAINS(warnings[0], "is bounded by 1 face (the shell is open)");
+  EXPECT_CONTAINS(warnings[0], "closed by sewing its faces");
+}
+
+TEST(ExtractSolids, SolidOpenByAWideGapIsRefused) {
+  // 1 on a box of diagonal 37 is a hole, not a gap of the export.
+  const std::string why = refusal([] { extract_solids(test::box_with_gap(10, 20, 30, 1, 1.0)); });
+  EXPECT_CONTAINS(why, "solid 1: edge ");
+  EXPECT_CONTAINS(why, "is bounded by 1 face (the shell is open)");
+}
+
+TEST(ExtractSolids, SolidWithHalfItsFacesInsideOutIsHealedWithAWarning) {
+  // Faces x max, y max, z max reversed: the volume sums to zero, and ShapeFix orients the shell.
+  std::vector<std::string> warnings;
+  const auto solids = extract_solids(test::box_with_reversed_faces(10, 8, 6, 0b101010), nullptr, &warnings);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 480.0, 1e-6);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_CONTAINS(warnings[0], "solid 1: has zero volume (flat, or partly inside out); healed by ShapeFix");
+}
+
+TEST(ExtractSolids, FaceReversedInItsShellIsHealedWithAWarning) {
+  std::vector<std::string> warnings;
+  const auto solids = extract_solids(test::box_with_reversed_face(10, 20, 30, 5), nullptr, &warnings);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6000.0, 1e-6);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_CONTAINS(warnings[0], "solid 1: shell 1 is invalid (BRepCheck_BadOrientationOfSubshape); healed by ShapeFix");
 }
 
 TEST(ExtractSolids, VertexFarFromItsCurveEndsIsRefusedBeforeBRepCheck) {
@@ -410,6 +509,26 @@ TEST(ExtractSolids, VertexFarFromItsCurveEndsIsRefusedBeforeBRepCheck) {
   BRep_Builder().UpdateVertex(v, BRep_Tool::Pnt(v).Translated(gp_Vec(0.3, 0.2, 0.1)), 1e-7);
   const std::string why = refusal([&] { extract_solids(shape); });
   EXPECT_CONTAINS(why, "'s curve does not end at its vertex: 0.374166 away, tolerance 1e-07");
+}
+
+// In an assembly, only the solid whose geometry the cheap checks refuse is left out; its edges
+// are numbered over it, as FreeCAD numbers them.
+TEST(ExtractSolids, SolidWithBrokenGeometryBesideAnotherIsSkipped) {
+  const TopoDS_Shape bad = BRepPrimAPI_MakeBox(gp_Pnt(5, 0, 0), 1, 1, 1).Shape();
+  const TopoDS_Vertex v = TopoDS::Vertex(TopExp_Explorer(bad, TopAbs_VERTEX).Current());
+  BRep_Builder().UpdateVertex(v, BRep_Tool::Pnt(v).Translated(gp_Vec(0.3, 0.2, 0.1)), 1e-7);
+  const std::string alone = refusal([&] { extract_solids(bad); });
+  BRep_Builder b;
+  TopoDS_Compound two;
+  b.MakeCompound(two);
+  b.Add(two, box());
+  b.Add(two, bad);
+  std::vector<std::string> warnings;
+  const auto solids = extract_solids(two, nullptr, &warnings);
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_NEAR(volume(solids[0]), 6.0, 1e-9);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].rfind("solid 2: " + alone + "; skipped", 0), 0u) << warnings[0];
 }
 
 TEST(ExtractSolids, CurveOnFaceAwayFromTheEdgeIsRefusedBeforeBRepCheck) {
