@@ -174,6 +174,9 @@ struct BoundaryDistance::Impl {
       // n is the plane's normal; the face's outer normal is n, or -n on a reversed face.
       const double outer = f.reversed ? -s : s;
       out.side = outer > 0 ? 1 : (outer < 0 ? -1 : 0);
+      out.uv = {u, v};
+      const double k = f.reversed ? -1.0 : 1.0;
+      out.normal = {k * n.X(), k * n.Y(), k * n.Z()};
       return;
     }
     if (!f.extrema) {
@@ -205,6 +208,8 @@ struct BoundaryDistance::Impl {
       const Point3 n = normal_at(f, u, v);
       const double outer = (p[0] - q.X()) * n[0] + (p[1] - q.Y()) * n[1] + (p[2] - q.Z()) * n[2];
       out.side = outer > 0 ? 1 : (outer < 0 ? -1 : 0);
+      out.uv = {u, v};
+      out.normal = n;
     }
   }
 

@@ -30,6 +30,8 @@ class BoundaryDistance {
     /// +1 the query point is outside the solid (it lies on the outer side of the face at the
     /// nearest point), -1 inside, 0 not known (the nearest point is on an edge).
     int side = 0;
+    std::array<double, 2> uv{0, 0};  ///< on the face (face >= 0): the point's parameters
+    Point3 normal{0, 0, 0};          ///< on the face: its outer unit normal there
   };
 
   /// The nearest boundary point to p, given `bound`, an upper bound of the distance (the
