@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <numeric>
 #include <set>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -18,48 +17,31 @@ int find_root(std::vector<int>& parent, int x) {
   return x;
 }
 
-struct CellHash {
-  std::size_t operator()(const std::array<std::int64_t, 3>& c) const {
-    return static_cast<std::size_t>(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
-  }
-};
-
 }  // namespace
 
 WeldStats weld_vertices(MedialMesh& mesh, double eps) {
   WeldStats st;
   const int nv = static_cast<int>(mesh.num_vertices());
   if (nv == 0 || !(eps > 0)) return st;
-  // Cells of side eps: a vertex's partners within eps lie in its cell or the 26 around it.
-  std::unordered_map<std::array<std::int64_t, 3>, std::vector<int>, CellHash> cells;
-  cells.reserve(static_cast<std::size_t>(nv));
-  auto cell_of = [eps](const Point3& p) {
-    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p[0] / eps)),
-                                       static_cast<std::int64_t>(std::floor(p[1] / eps)),
-                                       static_cast<std::int64_t>(std::floor(p[2] / eps))};
-  };
-  for (int v = 0; v < nv; ++v) cells[cell_of(mesh.vertices[v])].push_back(v);
+  // Along the mesh's own sides and edges only: two ends of a side shorter than eps are one point
+  // (a degenerate Voronoi vertex split over several cells). Two vertices that no short chain of
+  // sides joins are different points of the axis, however close: merging them would pinch it.
   std::vector<int> parent(static_cast<std::size_t>(nv));
   std::iota(parent.begin(), parent.end(), 0);
   const double eps2 = eps * eps;
-  for (int v = 0; v < nv; ++v) {
-    const Point3& p = mesh.vertices[v];
-    const auto c = cell_of(p);
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == cells.end()) continue;
-          for (int w : it->second) {
-            if (w <= v) continue;
-            const Point3& q = mesh.vertices[w];
-            const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
-            if (d2 > eps2) continue;
-            const int a = find_root(parent, v), b = find_root(parent, w);
-            if (a != b) parent[std::max(a, b)] = std::min(a, b);
-          }
-        }
+  auto join_if_short = [&](int a, int b) {
+    const Point3 &p = mesh.vertices[a], &q = mesh.vertices[b];
+    const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+    if (d2 > eps2) return;
+    const int ra = find_root(parent, a), rb = find_root(parent, b);
+    if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+  };
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    const int* c = mesh.face(f);
+    const int n = mesh.face_size(f);
+    for (int k = 0; k < n; ++k) join_if_short(c[k], c[(k + 1) % n]);
   }
+  for (const auto& e : mesh.edges) join_if_short(e[0], e[1]);
   std::vector<int> root(static_cast<std::size_t>(nv));
   bool any = false;
   for (int v = 0; v < nv; ++v) {
