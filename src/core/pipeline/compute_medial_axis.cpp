@@ -317,11 +317,14 @@ std::vector<SolidSampling> sample_solids(std::vector<std::unique_ptr<SolidSample
 
 std::vector<std::unique_ptr<SolidSampler>> samplers_for(const std::vector<TopoDS_Solid>& solids,
                                                         const std::vector<Features>& features,
+                                                        const SamplingParams& params,
                                                         std::vector<FaceSetup> faces = {}) {
   std::vector<std::unique_ptr<SolidSampler>> samplers;
-  for (size_t i = 0; i < solids.size(); ++i)
+  for (size_t i = 0; i < solids.size(); ++i) {
     samplers.push_back(std::make_unique<SolidSampler>(solids[i], features[i],
                                                       i < faces.size() ? std::move(faces[i]) : FaceSetup()));
+    samplers.back()->mirror_thin_walls(params.adapt_to_walls);
+  }
   return samplers;
 }
 
@@ -438,7 +441,7 @@ std::vector<SolidSampling> sample_as_computed(const TopoDS_Shape& shape, const S
     for (const TopoDS_Solid& solid : solids) features.push_back(classify_features(solid));
     const Measure m = measure(solids, features);
     sp = plan(m, params);
-    std::vector<std::unique_ptr<SolidSampler>> samplers = samplers_for(solids, features);
+    std::vector<std::unique_ptr<SolidSampler>> samplers = samplers_for(solids, features, params);
     std::vector<SolidSampling> sampled = sample_solids(samplers, features, m, params, sp.spacing, false, {});
     sp.estimated_samples = 0;
     for (std::size_t i = 0; i < sampled.size(); ++i) {
@@ -684,7 +687,7 @@ ComputeResult compute_as_given(const TopoDS_Shape& shape, const ComputeParams& p
           });
 
       t0 = Clock::now();
-      samplers = samplers_for(solids, features, std::move(faces));
+      samplers = samplers_for(solids, features, params.sampling, std::move(faces));
       sampled = sample_solids(samplers, features, m, params.sampling, spacing, true, progress);
       stats.spacing = spacing;
       add_timing(stats.timings, "sampling", seconds_since(t0));
@@ -812,6 +815,7 @@ ComputeResult compute_as_given(const TopoDS_Shape& shape, const ComputeParams& p
       ss.euler_characteristic = ms.euler_characteristic;
       ss.exact_inside_tests = ms.exact_inside_tests;
       ss.welded_vertices = ms.welded_vertices;
+      ss.mirrored_samples = samplers[i]->mirrored();
       stats.samples += ss.samples;
       stats.solids.push_back(ss);
       // The first solid's mesh is moved, not copied (one solid is the usual case).

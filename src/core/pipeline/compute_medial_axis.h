@@ -50,6 +50,7 @@ struct SolidStats {
   double radius_mean_excess = 0.0;
   std::size_t radii_corrected = 0;
   std::size_t vertices_moved_inside = 0;
+  std::size_t mirrored_samples = 0;  ///< face samples placed as mirrors across thin walls
   std::size_t welded_vertices = 0;  ///< output vertices closer than 1e-9 of the diagonal to another, merged  ///< vertices found outside, moved onto the boundary
 };
 

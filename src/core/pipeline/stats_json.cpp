@@ -84,6 +84,7 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"spacing\": " + number(s.spacing);
     j += ", \"refinements\": " + std::to_string(s.refinements);
     j += ", \"exact_inside_tests\": " + std::to_string(s.exact_inside_tests);
+j += ", \"mirrored_samples\": " + std::to_string(s.mirrored_samples);
     j += ", \"welded_vertices\": " + std::to_string(s.welded_vertices);
     j += ", \"radius_max_excess\": " + number(s.radius_max_excess);
     j += ", \"radius_mean_excess\": " + number(s.radius_mean_excess);

@@ -131,6 +131,8 @@ struct SolidSampler::State {
   std::vector<sampling_detail::FaceInterior> last_interiors;
   int kept_faces = 0;  ///< by the last pass
   std::unique_ptr<BoundaryDistance> boundaries[2];  ///< the thin walls' mirrors, one per thread
+  bool mirror = true;
+  std::size_t mirrored = 0;  ///< by the last pass
 };
 
 namespace {
@@ -716,7 +718,8 @@ class Sampler {
 
   // Thin walls in mirrored pairs (mirror_thin_walls.h): walls thinner than 2 kMirrorBelow spacings.
   void mirror_walls(std::vector<FaceInterior>& interiors) {
-    if (std::getenv("CADMEDIAL_NO_MIRROR")) return;
+    state_.mirrored = 0;
+    if (!state_.mirror) return;
     constexpr double kMirrorBelow = 2.0;
     for (auto& b : state_.boundaries)
       if (!b) b = std::make_unique<BoundaryDistance>(state_.solid);
@@ -724,7 +727,7 @@ class Sampler {
     for (std::size_t i = 0; i < placed.size(); ++i) placed[i] = {out_.points[i], out_.normal[i], exclusion_[i]};
     BoundaryDistance* boundaries[2] = {state_.boundaries[0].get(), state_.boundaries[1].get()};
     const MirrorStats ms = mirror_thin_walls(interiors, field_, placed, boundaries, kMirrorBelow, 1e-7 * field_.uniform());
-    if (std::getenv("CADMEDIAL_DEBUG_MIRROR")) std::fprintf(stderr, "mirrored %zu replaced %zu\n", ms.mirrored, ms.replaced);
+    state_.mirrored = ms.mirrored;
   }
 
   // The samples placed so far, as the face interiors' crowding test sees them, sorted.
@@ -1059,6 +1062,9 @@ SolidSampler::SolidSampler(const TopoDS_Solid& solid, const Features& features, 
 SolidSampler::~SolidSampler() = default;
 
 int SolidSampler::kept_faces() const { return state_->kept_faces; }
+
+void SolidSampler::mirror_thin_walls(bool on) { state_->mirror = on; }
+std::size_t SolidSampler::mirrored() const { return state_->mirrored; }
 
 Samples SolidSampler::sample(const SpacingField& field, const Progress& progress) {
   FaceDomainBuilder domains;

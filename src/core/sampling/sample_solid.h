@@ -94,6 +94,11 @@ class SolidSampler {
   Samples sample(const SpacingField& field, FaceDomainBuilder& domains, const Progress& progress = {});
   /// How many faces the last sample() took over from the pass before.
   int kept_faces() const;
+  /// Whether walls thinner than a few spacings are sampled in mirrored pairs
+  /// (mirror_thin_walls.h); on by default.
+  void mirror_thin_walls(bool on);
+  /// How many face samples the last sample() placed as mirrors of a thin wall's other side.
+  std::size_t mirrored() const;
 
   struct State;
 
