@@ -139,7 +139,7 @@ constexpr double kMaxRefinement = 4.0;
 // Finer than that, up to kDeepestRefinement, when the sampling takes at most kSampleBudget times
 // the uniform sampling's count (tried only when estimate_samples says it will: a sampling over
 // budget is thrown away).
-constexpr double kDeepestRefinement = 32.0;
+constexpr double kDeepestRefinement = 256.0;
 constexpr double kSampleBudget = 3.0;
 constexpr double kGradation = 0.5;
 constexpr double kSharpWedgeDot = -0.95;  // normals of a wedge of 18 degrees
@@ -158,17 +158,20 @@ struct SolidSampling {
   double first_thinnest = std::numeric_limits<double>::infinity();
 };
 
-// Per sample of a uniform sampling, half the thickness of a wall thinner than the spacing.
-// Wedges of more than about 18 degrees are sampled finer near their edge too (tail_turbine's
-// 43-degree edges had holes in the sheet there); sharper ones would only hit the floor.
-std::vector<double> radii_of_thin_walls(const Samples& samples, const Features& features, double spacing,
-                                        const Progress& progress, int threads) {
-  return wall_radii(samples, spacing, convex_face_pairs(features), kSharpWedgeDot, progress, threads);
+// Per sample of a uniform sampling, half the thickness of a wall thinner than the spacing allows
+// at a convex edge (edge_walls.h): the faces of thin walls are sampled in mirrored pairs
+// (mirror_thin_walls.h), which carry their sheets at any spacing; only the rims, where the sheet
+// forks to two edges a wall's thickness apart, need the finer samples. Walls up to two spacings
+// thick: a chip resistor's terminal caps, 1.4 spacings, had half their edges unreached.
+std::vector<double> radii_of_thin_walls(const Samples& samples, double spacing, SolidSampler& sampler) {
+  return sampler.edge_wall_radii(samples, spacing);
 }
 
-// Whether radii_of_thin_walls would find any (it stops at the first).
-bool has_thin_walls(const Samples& samples, const Features& features, double spacing, const Progress& progress) {
-  return any_thin_wall(samples, spacing, convex_face_pairs(features), kSharpWedgeDot, progress);
+// Whether radii_of_thin_walls would find any.
+bool has_thin_walls(const Samples& samples, double spacing, SolidSampler& sampler) {
+  for (double r : sampler.edge_wall_radii(samples, spacing))
+    if (r < spacing) return true;
+  return false;
 }
 
 // The spacing there (uniform when no wall is thinner than the spacing), measured on the faces and
@@ -308,7 +311,7 @@ std::vector<SolidSampling> sample_solids(std::vector<std::unique_ptr<SolidSample
     s.walls_pending = true;
     if (defer_walls) continue;
     naming_solid(i, samplers.size(), [&] {
-      const std::vector<double> radii = radii_of_thin_walls(s.samples, features[i], spacing, progress, 2);
+      const std::vector<double> radii = radii_of_thin_walls(s.samples, spacing, *samplers[i]);
       resample_for(s, features[i], m.solids[i], spacing, radii, *samplers[i], progress);
     });
   }
@@ -521,7 +524,7 @@ SolidAxis axis_of(const SolidJob& job, SolidSampling& sampling, double spacing, 
     };
     std::atomic<bool> cancelled{false};
     std::future<void> worker_done =
-        std::async(std::launch::async, [&s = sampling, &f = job.features, &check_seconds, &reconstruction_seconds,
+        std::async(std::launch::async, [&s = sampling, &f = job.features, &sampler = job.sampler, &check_seconds, &reconstruction_seconds,
                                         &walls_seconds, &thin, &worker, spacing, &to_check,
                                         &prepare_inside = job.prepare_inside, &abandoned, &cancelled, &triangulated,
                                         &resample, &reconstructed, &checked, i, n] {
@@ -531,7 +534,7 @@ SolidAxis axis_of(const SolidJob& job, SolidSampling& sampling, double spacing, 
               // Most parts have no wall this thin at their spacing: looking beside the
               // triangulation saves the check's time; where one is, the triangulation is given
               // up as soon as it is found.
-              const bool thin_walls = has_thin_walls(s.samples, f, spacing, worker);
+              const bool thin_walls = has_thin_walls(s.samples, spacing, sampler);
               walls_seconds += seconds_since(start);
               if (thin_walls) {
                 resample = true;
@@ -611,7 +614,7 @@ SolidAxis axis_of(const SolidJob& job, SolidSampling& sampling, double spacing, 
     worker_done.get();
     try {
       naming_solid(i, n, [&] {
-        const std::vector<double> radii = radii_of_thin_walls(samples, job.features, spacing, sub, 2);
+        const std::vector<double> radii = radii_of_thin_walls(samples, spacing, job.sampler);
         resample_for(sampling, job.features, job.measure, spacing, radii, job.sampler, sub);
       });
     } catch (const Cancelled&) {

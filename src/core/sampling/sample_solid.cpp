@@ -2,6 +2,7 @@
 // then face interiors, which keep clear of everything placed before them.
 #include "sample_solid.h"
 #include "face_interior.h"
+#include "edge_walls.h"
 #include "mirror_thin_walls.h"
 #include <cstdlib>
 #include <cstdio>
@@ -1065,6 +1066,17 @@ int SolidSampler::kept_faces() const { return state_->kept_faces; }
 
 void SolidSampler::mirror_thin_walls(bool on) { state_->mirror = on; }
 std::size_t SolidSampler::mirrored() const { return state_->mirrored; }
+
+std::vector<double> SolidSampler::edge_wall_radii(const Samples& samples, double r_max) {
+  for (auto& b : state_->boundaries)
+    if (!b) b = std::make_unique<BoundaryDistance>(state_->solid);
+  BoundaryDistance* boundaries[2] = {state_->boundaries[0].get(), state_->boundaries[1].get()};
+  try {
+    return cadmedial::edge_wall_radii(samples, boundaries, r_max, 1e-7 * r_max);
+  } catch (const Standard_Failure& err) {
+    throw GeometryError(std::string("measuring thin walls failed: ") + err.GetMessageString());
+  }
+}
 
 Samples SolidSampler::sample(const SpacingField& field, const Progress& progress) {
   FaceDomainBuilder domains;

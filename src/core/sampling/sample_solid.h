@@ -99,6 +99,8 @@ class SolidSampler {
   void mirror_thin_walls(bool on);
   /// How many face samples the last sample() placed as mirrors of a thin wall's other side.
   std::size_t mirrored() const;
+  /// edge_wall_radii (edge_walls.h) of a sampling this sampler made, for walls up to 2 r_max thick.
+  std::vector<double> edge_wall_radii(const Samples& samples, double r_max);
 
   struct State;
 
