@@ -6,11 +6,47 @@ import os
 import FreeCAD as App
 import FreeCADGui as Gui
 import Part
-from PySide2 import QtWidgets
+from PySide2 import QtCore, QtWidgets
 
+import cadmedial
 from cadmedial.app import export_medial_axis, is_medial_axis, make_medial_shape
 
 from .icons import icon_path
+
+
+# The last message box shown (tests read and close it; it does not block).
+last_message = None
+
+
+def show_message(title, text, icon=QtWidgets.QMessageBox.Warning):
+    """A message box that does not block the caller (tests and macros go on)."""
+    global last_message
+    box = QtWidgets.QMessageBox(icon, title, text, QtWidgets.QMessageBox.Ok, Gui.getMainWindow())
+    box.setAttribute(QtCore.Qt.WA_DeleteOnClose)
+    box.open()
+    last_message = box
+    return box
+
+
+def why_not_a_source(obj):
+    """None when obj's shape holds a solid the engine can read, else why not (the engine's
+    words for a solid it refuses)."""
+    try:
+        shape = Part.getShape(obj)
+    except Exception:
+        shape = None
+    if shape is None or shape.isNull():
+        return "%s has no shape." % obj.Label
+    if not shape.Solids:
+        parts = shape.SubShapes if shape.ShapeType == "Compound" else [shape]
+        kinds = sorted({part.ShapeType.lower() for part in parts}) or ["nothing"]
+        return ("%s is not a solid (it is a %s): the medial axis needs a closed solid."
+                % (obj.Label, " and a ".join(kinds)))
+    try:
+        cadmedial.read_shape(shape)
+    except cadmedial.Error as error:
+        return "%s cannot be used: %s" % (obj.Label, error)
+    return None
 
 
 def solid_sources():
@@ -37,13 +73,26 @@ class CreateMedialAxis:
                            "(one parametric object per selected object)"}
 
     def IsActive(self):
-        return App.ActiveDocument is not None and bool(solid_sources())
+        # Active with anything selected: a selection that cannot be used gets a message saying
+        # why (a greyed button says nothing).
+        return App.ActiveDocument is not None and bool(Gui.Selection.getSelection())
 
     def Activated(self):
         from .task_panel import TaskPanelMedialAxis
-        sources = solid_sources()
-        if sources:
-            Gui.Control.showDialog(TaskPanelMedialAxis(sources))
+        selection = Gui.Selection.getSelection()
+        reasons = [why for why in map(why_not_a_source, selection) if why]
+        if reasons:
+            show_message("Medial axis", "\n\n".join(reasons))
+            App.Console.PrintWarning("Medial axis: %s\n" % " ".join(reasons))
+            return
+        if Gui.Control.activeDialog():
+            show_message("Medial axis", "Close the open task panel first.")
+            return
+        try:
+            Gui.Control.showDialog(TaskPanelMedialAxis(selection))
+        except Exception as error:  # never a traceback: say it
+            show_message("Medial axis", str(error))
+            App.Console.PrintError("Medial axis: %s\n" % error)
 
 
 class ExportMedialAxis:
@@ -59,7 +108,9 @@ class ExportMedialAxis:
 
     def Activated(self):
         obj = selected_medial_axes()[0]
-        start = os.path.join(os.path.expanduser("~"), obj.Label.replace(" ", "_") + ".ply")
+        # Beside the document when it was saved, else in the home folder.
+        folder = os.path.dirname(obj.Document.FileName) if obj.Document.FileName else ""
+        start = os.path.join(folder or os.path.expanduser("~"), obj.Label.replace(" ", "_") + ".ply")
         path, chosen = QtWidgets.QFileDialog.getSaveFileName(
             Gui.getMainWindow(), "Export medial axis", start, self.FILTERS)
         if not path:
@@ -89,8 +140,13 @@ class MakeMedialShape:
         objects = selected_medial_axes()
         doc = objects[0].Document
         doc.openTransaction("Medial surface as Part shape")
-        for obj in objects:
-            make_medial_shape(obj)
+        try:
+            for obj in objects:
+                make_medial_shape(obj)
+        except Exception as error:  # e.g. Stop in the progress dialog
+            doc.abortTransaction()
+            show_message("Medial surface as Part shape", str(error))
+            return
         doc.commitTransaction()
 
 
@@ -98,6 +154,8 @@ COMMANDS = {"MedialAxis_Create": CreateMedialAxis, "MedialAxis_Export": ExportMe
             "MedialAxis_MakeShape": MakeMedialShape}
 
 
-def register():
-    for name, command in COMMANDS.items():
+def register(commands=None):
+    """Registers COMMANDS (or the given {name: class}): another module adds its own with
+    register({"MedialAxis_Thickness": ...}) and lists the name in InitGui's toolbar."""
+    for name, command in (commands or COMMANDS).items():
         Gui.addCommand(name, command())
