@@ -242,6 +242,26 @@ def run():
     picking.observer.addSelection(doc.Name, feature.Name, "", (p.x, p.y, p.z))
     report["pick_message"] = picking.observer.last_message
 
+    # One click zooms onto the thinnest wall.
+    plate = doc.addObject("Part::Box", "Plate")
+    plate.Length, plate.Width, plate.Height = 40.0, 40.0, 1.0
+    plate.Placement.Base = App.Vector(0, -80, 0)
+    doc.recompute()
+    thin = cadmedial.app.make_medial_axis(plate, samples=2000)
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(thin)
+    settle(0.3)
+    Gui.runCommand("MedialAxis_ThinnestWall")
+    settle(0.5)
+    camera = Gui.ActiveDocument.ActiveView.getCamera()
+    report["thinnest_wall"] = {"thickness": thin.ThinnestWall.Value,
+                               "at": [thin.ThinnestWallAt.x, thin.ThinnestWallAt.y, thin.ThinnestWallAt.z],
+                               "camera": camera}
+    Gui.ActiveDocument.ActiveView.saveImage(os.path.join(OUT, "thinnest_wall.png"), 800, 600, "White")
+    doc.removeObject(thin.Name)
+    doc.removeObject(plate.Name)
+    doc.recompute()
+
     # Save, close, reopen: the colours come back (pixels of the view).
     path = os.path.join(OUT, "reopen.FCStd")
     for o in doc.Objects:

@@ -48,7 +48,7 @@ def smoke(tmp_path_factory):
     if keep:
         os.makedirs(keep, exist_ok=True)
         for name in ("workbench.png", "view.png", "panel.png", "face_message.png", "reopened.png",
-                     "reopened_workbench.png", "report.json"):
+                     "reopened_workbench.png", "thinnest_wall.png", "report.json"):
             if (out / name).exists():
                 shutil.copy(out / name, keep)
     assert "exception" not in report, report["exception"]
@@ -159,3 +159,11 @@ def test_console_one_liner_gets_the_coloured_view(smoke):
     assert console["proxy"] == "ViewProviderMedialAxis"
     assert console["coloring"] is True
     assert console["colors"] == console["points"] > 0
+
+
+def test_one_click_zooms_onto_the_thinnest_wall(smoke):
+    wall = smoke["thinnest_wall"]
+    assert wall["thickness"] == pytest.approx(1.0, rel=0.05)
+    # The camera looks at the wall with a field 40 wall thicknesses high.
+    height = float(re.search(r"height ([-\d.e]+)", wall["camera"]).group(1))
+    assert height == pytest.approx(40.0 * wall["thickness"], rel=0.01)

@@ -13,6 +13,16 @@ view_provider_factories = {}
 background_runner = None
 
 
+# None headless. The GUI sets a callable() that lets it draw and run its timers (no user input)
+# between the slow property assignments of one result: each one then stalls it alone.
+breathe = None
+
+
+def let_gui_breathe():
+    if App.GuiUp and breathe is not None:
+        breathe()
+
+
 def run_long(text, work):
     """work(progress) through the GUI's background_runner, or here and now (headless)."""
     if App.GuiUp and background_runner is not None:

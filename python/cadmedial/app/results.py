@@ -18,6 +18,8 @@ import Mesh
 import cadmedial
 from cadmedial.colormap import colors_of
 
+from .registry import let_gui_breathe
+
 
 class StoredResult:
     """What store_result() assigns, built from one MedialAxisResult. Owns a temporary folder
@@ -55,9 +57,13 @@ def store_result(obj, stored):
         stored = prepare_result(stored)
     result = stored.result
     try:
+        # Each of the mesh and the colours takes the GUI about 3 s per million vertices to
+        # take in (FreeCAD's view provider, in the GUI thread): let it draw in between.
         obj.Mesh = stored.mesh
+        let_gui_breathe()
         obj.RadiusMin, obj.RadiusMax = stored.low, stored.high
         obj.RadiusColors = stored.colors
+        let_gui_breathe()
         stats = result.stats
         obj.SampleCount = int(stats.get("samples", 0))
         solids = stats.get("solids", [])

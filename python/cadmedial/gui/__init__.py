@@ -8,12 +8,13 @@ cadmedial.app.make_medial_axis() in the Python console gets the coloured view to
 from cadmedial.app import registry, view_provider_factories
 
 from . import commands, picking
-from .busy import run_with_progress
+from .busy import breathe, run_with_progress
 from .view_provider import ViewProviderMedialAxis, ViewProviderMedialShape
 
 view_provider_factories["MedialAxis"] = ViewProviderMedialAxis
 view_provider_factories["MedialShape"] = ViewProviderMedialShape
 registry.background_runner = run_with_progress
+registry.breathe = breathe
 commands.register()
 picking.install()
 

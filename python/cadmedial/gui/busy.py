@@ -52,3 +52,8 @@ def run_with_progress(text, work):
     if job.error is not None:
         raise job.error
     return job.value
+
+
+def breathe():
+    """Lets the GUI draw and run its timers, not take user input (called inside a recompute)."""
+    QtWidgets.QApplication.processEvents(QtCore.QEventLoop.ExcludeUserInputEvents, 20)

@@ -1,4 +1,5 @@
-"""The workbench's commands: MedialAxis_Create, MedialAxis_Export, MedialAxis_MakeShape.
+"""The workbench's commands: MedialAxis_Create, MedialAxis_Export, MedialAxis_MakeShape,
+MedialAxis_ThinnestWall.
 They gather the selection and call cadmedial.app; no geometry here."""
 
 import os
@@ -150,8 +151,47 @@ class MakeMedialShape:
         doc.commitTransaction()
 
 
+class GoToThinnestWall:
+    """Zooms the 3D view onto the thinnest wall of the selected medial axis (ThinnestWallAt)."""
+
+    def GetResources(self):
+        return {"Pixmap": icon_path("MedialAxis_Create.svg"),
+                "MenuText": "Go to the thinnest wall",
+                "ToolTip": "Zoom the view onto the thinnest wall the selected medial axis found"}
+
+    def IsActive(self):
+        return len(selected_medial_axes()) == 1 and Gui.ActiveDocument is not None
+
+    def Activated(self):
+        obj = selected_medial_axes()[0]
+        thickness = obj.ThinnestWall.Value if "ThinnestWall" in obj.PropertiesList else 0.0
+        if thickness <= 0:
+            show_message("Thinnest wall", "%s found no wall thinner than two sample spacings."
+                         % obj.Label, QtWidgets.QMessageBox.Information)
+            return
+        at = obj.ThinnestWallAt
+        zoom_onto(Gui.ActiveDocument.ActiveView, at, 40.0 * thickness)
+        Gui.getMainWindow().statusBar().showMessage(
+            "%s: thinnest wall %.4g mm at (%.4g, %.4g, %.4g)" % (obj.Label, thickness, at.x, at.y, at.z),
+            15000)
+
+
+def zoom_onto(view, point, size):
+    """Points an orthographic camera, in the view's current orientation, at point, showing a
+    field `size` mm high."""
+    rotation = view.getCameraOrientation()
+    back = rotation.multVec(App.Vector(0, 0, 1))
+    position = point + back * (10.0 * size)
+    axis, angle = rotation.Axis, rotation.Angle
+    view.setCamera("#Inventor V2.1 ascii\nOrthographicCamera {\n position %r %r %r\n "
+                   "orientation %r %r %r %r\n nearDistance %r\n farDistance %r\n "
+                   "focalDistance %r\n height %r\n}\n" % (
+                       position.x, position.y, position.z, axis.x, axis.y, axis.z, angle,
+                       0.1 * size, 100.0 * size, 10.0 * size, size))
+
+
 COMMANDS = {"MedialAxis_Create": CreateMedialAxis, "MedialAxis_Export": ExportMedialAxis,
-            "MedialAxis_MakeShape": MakeMedialShape}
+            "MedialAxis_MakeShape": MakeMedialShape, "MedialAxis_ThinnestWall": GoToThinnestWall}
 
 
 def register(commands=None):

@@ -65,7 +65,7 @@ class ViewProviderMedialAxis(_StatelessProxy):
             # Switch colouring off and on so that the new colour list is applied to the new mesh.
             obj.ViewObject.Coloring = False
             obj.ViewObject.Coloring = True
-        if prop in ("RadiusColors", "Label"):
+        if prop in ("RadiusColors", "VertexCount", "RadiusMax", "Label"):
             _refresh_later(obj.Document)
 
     def onChanged(self, vobj, prop):
