@@ -278,6 +278,9 @@ def run():
     settle(1.0)
     view.saveImage(os.path.join(OUT, "reopened.png"), 800, 600, "White")
     report["reopened_coloured_pixels_sampled"] = coloured_pixels(os.path.join(OUT, "reopened.png"))
+    views = legend._view_widgets(doc)
+    shown = legend.legend_of(views[0]) if views else None
+    report["reopened_legend"] = shown.text() if shown is not None and shown.isVisible() else None
     QtGui.QGuiApplication.primaryScreen().grabWindow(0).save(os.path.join(OUT, "reopened_workbench.png"))
     report["steps"].append("done")
 

@@ -146,6 +146,7 @@ def test_picked_point_shows_its_radius(smoke):
 
 def test_reopened_document_keeps_its_colours(smoke):
     assert smoke["reopened_coloured_pixels_sampled"] > 1000
+    assert smoke["reopened_legend"] is not None and "Medial radius" in smoke["reopened_legend"]
 
 
 def test_task_panel_edits_an_existing_feature(smoke):

@@ -99,9 +99,17 @@ def _view_widgets(doc):
     widgets = []
     for view in gui_doc.mdiViewsOfType("Gui::View3DInventor"):
         try:
-            widgets.append(view.graphicsView())
-        except Exception:  # a view that is being closed
+            widget = view.graphicsView()
+            widget.objectName()  # raises on a wrapper PySide kept of a deleted widget
+            widgets.append(widget)
+        except Exception:  # a view that is being closed, or a stale wrapper
             continue
+    if not widgets and gui_doc.mdiViewsOfType("Gui::View3DInventor"):
+        # After a document was closed, PySide can hand back its deleted view's wrapper for the
+        # new one: find the new view's widget through the main window instead.
+        for window in Gui.getMainWindow().findChildren(QtWidgets.QMdiSubWindow):
+            if window.windowTitle().split(" : ")[0] == doc.Label:
+                widgets.extend(window.findChildren(QtWidgets.QGraphicsView))
     return widgets
 
 
@@ -113,7 +121,7 @@ def legend_of(widget):
 def refresh(doc, leaving=None):
     """Shows the ranges of the visible MedialAxis objects of doc (but `leaving`, being deleted)
     in a legend over each of its 3D views; hides the legend when there is none. Returns whether
-    a 3D view was there to show it in."""
+    it showed one (False also when the document has no 3D view yet)."""
     entries = []
     for obj in doc.Objects if doc is not None else []:
         if obj is leaving or not is_medial_axis(obj) or not obj.VertexCount:
@@ -129,4 +137,4 @@ def refresh(doc, leaving=None):
                 continue
             legend = RadiusLegend(widget)
         legend.set_entries(entries)
-    return bool(widgets)
+    return bool(widgets) and bool(entries)

@@ -71,6 +71,17 @@ class TaskPanelMedialAxis:
         layout = QtWidgets.QVBoxLayout(form)
         names = ", ".join(s.Label for s in self.sources)
         layout.addWidget(_wrapping("<b>Solids:</b> %s" % names))
+        # Progress and Stop first: seen without scrolling, even at 200 % scaling.
+        self.progress = QtWidgets.QProgressBar()
+        self.progress.setRange(0, 1000)
+        self.progress.setTextVisible(False)
+        layout.addWidget(self.progress)
+        self.stop = QtWidgets.QPushButton("Stop")
+        self.stop.setEnabled(False)
+        self.stop.clicked.connect(self.cancel)
+        layout.addWidget(self.stop)
+        self.stage = _wrapping("")
+        layout.addWidget(self.stage)
 
         density = QtWidgets.QGroupBox("Sampling")
         rows = _form_layout(density)
@@ -126,16 +137,6 @@ class TaskPanelMedialAxis:
         layout.addWidget(self.make_shape)
         self.make_shape.setVisible(self.edit is None)
 
-        self.progress = QtWidgets.QProgressBar()
-        self.progress.setRange(0, 1000)
-        self.progress.setTextVisible(False)
-        layout.addWidget(self.progress)
-        self.stop = QtWidgets.QPushButton("Stop")
-        self.stop.setEnabled(False)
-        self.stop.clicked.connect(self.cancel)
-        layout.addWidget(self.stop)
-        self.stage = _wrapping("")
-        layout.addWidget(self.stage)
         layout.addStretch(1)
 
         for widget in (self.samples, self.spacing):
