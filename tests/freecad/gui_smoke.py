@@ -87,7 +87,6 @@ def run():
     wait_until(panel.estimate_idle, 60, "the estimate")
     report["preview_4000"] = panel.preview.text()
     # The panel at the default Combo View width: Stop shown, nothing wider than the panel.
-    task_view = panel.form.parentWidget()
     report["panel_width"] = panel.form.width()
     report["panel_min_width"] = panel.form.minimumSizeHint().width()
     report["stop_visible"] = panel.stop.isVisible() and panel.stop.width() > 20
