@@ -19,7 +19,10 @@ class MedialAxisWorkbench(FreeCADGui.Workbench):
 
     def Initialize(self):
         import cadmedial.gui  # noqa: F401  (registers the commands)
-        commands = ["MedialAxis_Create", "MedialAxis_Export", "MedialAxis_MakeShape"]
+        # Another module's commands register themselves (cadmedial.gui.commands.register) and
+        # are listed here.
+        commands = ["MedialAxis_Create", "MedialAxis_Export", "MedialAxis_MakeShape",
+                    "MedialAxis_ThinnestWall"]
         self.appendToolbar("Medial Axis", commands)
         self.appendMenu("&Medial Axis", commands)
 

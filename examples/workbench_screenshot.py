@@ -46,6 +46,7 @@ def main():
     settle(0.5)
     from cadmedial.gui import task_panel
     panel = task_panel.active_panel
+    panel.choose_mode("samples")
     panel.samples.setValue(30000)
     panel.accept()
     while task_panel.active_panel is not None:

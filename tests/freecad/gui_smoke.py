@@ -43,6 +43,18 @@ def report_view_text():
     return ""
 
 
+def coloured_pixels(path):
+    """Of every 4th pixel in x and y, those in the radius colour map's range (violet..yellow)."""
+    image = QtGui.QImage(path)
+    coloured = 0
+    for y in range(0, image.height(), 4):
+        for x in range(0, image.width(), 4):
+            c = QtGui.QColor(image.pixel(x, y))
+            if abs(c.red() - c.green()) > 60 or abs(c.green() - c.blue()) > 60:
+                coloured += 1
+    return coloured
+
+
 def run():
     mw = Gui.getMainWindow()
     mw.setGeometry(QtGui.QGuiApplication.primaryScreen().availableGeometry())
@@ -66,11 +78,19 @@ def run():
     from cadmedial.gui import task_panel
     panel = task_panel.active_panel
     report["task_dialog_open"] = Gui.Control.activeDialog()
+    report["mode_default"] = panel.mode_key()
+    panel.choose_mode("samples")
+    wait_until(panel.estimate_idle, 60, "the estimate")
     report["preview_default"] = panel.preview.text()
     report["refine_default"] = panel.refine.isChecked()
     panel.samples.setValue(4000)
-    settle(0.2)
+    wait_until(panel.estimate_idle, 60, "the estimate")
     report["preview_4000"] = panel.preview.text()
+    # The panel at the default Combo View width: Stop shown, nothing wider than the panel.
+    report["panel_width"] = panel.form.width()
+    report["panel_min_width"] = panel.form.minimumSizeHint().width()
+    report["stop_visible"] = panel.stop.isVisible() and panel.stop.width() > 20
+    panel.form.grab().save(os.path.join(OUT, "panel.png"))
     panel.make_shape.setChecked(True)
     panel.accept()
     report["stop_enabled_while_running"] = panel.stop.isEnabled()
@@ -106,13 +126,7 @@ def run():
     # Pixels of the 3D view area that are in the radius colour map's range (violet..yellow).
     image = QtGui.QImage(os.path.join(OUT, "view.png"))
     report["view_size"] = [image.width(), image.height()]
-    coloured = 0
-    for y in range(0, image.height(), 4):
-        for x in range(0, image.width(), 4):
-            c = QtGui.QColor(image.pixel(x, y))
-            if abs(c.red() - c.green()) > 60 or abs(c.green() - c.blue()) > 60:
-                coloured += 1
-    report["coloured_pixels_sampled"] = coloured
+    report["coloured_pixels_sampled"] = coloured_pixels(os.path.join(OUT, "view.png"))
 
     # Changing the box recomputes the medial axis.
     box.Length = 80.0
@@ -128,6 +142,16 @@ def run():
     Gui.Selection.addSelection(plane)
     settle(0.3)
     report["create_active_with_face"] = Gui.Command.get("MedialAxis_Create").isActive()
+    from cadmedial.gui import commands
+    commands.last_message = None
+    Gui.runCommand("MedialAxis_Create")
+    settle(0.3)
+    box_shown = commands.last_message
+    report["face_message"] = box_shown.text() if box_shown is not None else None
+    report["dialog_open_for_face"] = Gui.Control.activeDialog()
+    if box_shown is not None:
+        box_shown.grab().save(os.path.join(OUT, "face_message.png"))
+        box_shown.close()
     count = len(doc.Objects)
     import cadmedial.app
     try:
@@ -162,6 +186,7 @@ def run():
     Gui.runCommand("MedialAxis_Create")
     settle(0.3)
     panel = task_panel.active_panel
+    panel.choose_mode("samples")
     panel.samples.setValue(3000000)
     panel.accept()
     settle(0.5)
@@ -172,12 +197,28 @@ def run():
     panel.reject()
     settle(0.3)
     report["dialog_open_after_reject"] = Gui.Control.activeDialog()
+    # One Cancel while computing stops and closes.
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(box)
+    Gui.runCommand("MedialAxis_Create")
+    settle(0.3)
+    panel = task_panel.active_panel
+    panel.choose_mode("samples")
+    panel.samples.setValue(3000000)
+    panel.accept()
+    settle(0.5)
+    panel.reject()
+    wait_until(lambda: panel.job is None, 120, "the cancelled compute to end")
+    settle(0.3)
+    report["dialog_open_after_one_cancel"] = Gui.Control.activeDialog()
+    report["objects_added_by_cancel"] = len(doc.Objects) - count
 
     # Editing: the task panel on an existing feature changes its parameters and recomputes.
     Gui.ActiveDocument.setEdit(feature.Name)
     settle(0.3)
     panel = task_panel.active_panel
     report["edit_panel_for"] = panel.edit.Name if panel and panel.edit else None
+    report["edit_mode"] = panel.mode_key()
     panel.theta.setValue(10.0)
     panel.refine.setChecked(False)
     panel.accept()
@@ -194,6 +235,52 @@ def run():
     report["console"] = {
         "proxy": type(made.ViewObject.Proxy).__name__, "coloring": made.ViewObject.Coloring,
         "colors": len(made.RadiusColors), "points": made.Mesh.CountPoints}
+    # A picked point says its radius in the status bar.
+    from cadmedial.gui import picking
+    p = feature.Mesh.Points[0]
+    picking.observer.addSelection(doc.Name, feature.Name, "", (p.x, p.y, p.z))
+    report["pick_message"] = picking.observer.last_message
+
+    # One click zooms onto the thinnest wall.
+    plate = doc.addObject("Part::Box", "Plate")
+    plate.Length, plate.Width, plate.Height = 40.0, 40.0, 1.0
+    plate.Placement.Base = App.Vector(0, -80, 0)
+    doc.recompute()
+    thin = cadmedial.app.make_medial_axis(plate, samples=2000)
+    Gui.Selection.clearSelection()
+    Gui.Selection.addSelection(thin)
+    settle(0.3)
+    Gui.runCommand("MedialAxis_ThinnestWall")
+    settle(0.5)
+    camera = Gui.ActiveDocument.ActiveView.getCamera()
+    report["thinnest_wall"] = {"thickness": thin.ThinnestWall.Value,
+                               "at": [thin.ThinnestWallAt.x, thin.ThinnestWallAt.y, thin.ThinnestWallAt.z],
+                               "camera": camera}
+    Gui.ActiveDocument.ActiveView.saveImage(os.path.join(OUT, "thinnest_wall.png"), 800, 600, "White")
+    doc.removeObject(thin.Name)
+    doc.removeObject(plate.Name)
+    doc.recompute()
+
+    # Save, close, reopen: the colours come back (pixels of the view).
+    path = os.path.join(OUT, "reopen.FCStd")
+    for o in doc.Objects:
+        if o.Name != feature.Name and o.ViewObject is not None:
+            o.ViewObject.Visibility = False
+    doc.saveAs(path)
+    App.closeDocument(doc.Name)
+    settle(0.5)
+    doc = App.openDocument(path)
+    settle(1.5)
+    view = Gui.ActiveDocument.ActiveView
+    view.viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
+    settle(1.0)
+    view.saveImage(os.path.join(OUT, "reopened.png"), 800, 600, "White")
+    report["reopened_coloured_pixels_sampled"] = coloured_pixels(os.path.join(OUT, "reopened.png"))
+    views = legend._view_widgets(doc)
+    shown = legend.legend_of(views[0]) if views else None
+    report["reopened_legend"] = shown.text() if shown is not None and shown.isVisible() else None
+    QtGui.QGuiApplication.primaryScreen().grabWindow(0).save(os.path.join(OUT, "reopened_workbench.png"))
     report["steps"].append("done")
 
 

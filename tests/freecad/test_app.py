@@ -383,3 +383,40 @@ def test_engine_block_example_whose_spline_edge_defeats_arc_length_search_comput
         assert solid.isInside(p, 1e-6 * solid.BoundBox.DiagonalLength, True), i
         d = boundary.distToShape(Part.Vertex(p))[0]
         assert d <= result.radius[i] + 1e-6 and result.radius[i] <= d + h, (i, d, result.radius[i])
+
+
+def test_failed_recompute_puts_the_error_mark_on_the_object(doc):
+    feature = medial_app.make_medial_axis(add_box(doc), samples=SAMPLES)
+    assert "Invalid" not in feature.State
+    feature.Theta = 95.0
+    doc.recompute()
+    assert "Invalid" in feature.State  # FreeCAD's error mark in the tree
+    feature.Theta = 5.0
+    doc.recompute()
+    assert "Invalid" not in feature.State and feature.Status == "ok"
+
+
+def test_thinnest_wall_is_a_property_with_its_place(doc):
+    plate = doc.addObject("Part::Box", "Plate")
+    plate.Length, plate.Width, plate.Height = 40.0, 40.0, 1.0
+    doc.recompute()
+    feature = medial_app.make_medial_axis(plate, samples=2000)
+    assert feature.ThinnestWall.Value == pytest.approx(1.0, rel=0.05)
+    at = feature.ThinnestWallAt
+    assert at.z == pytest.approx(0.0, abs=1e-6) or at.z == pytest.approx(1.0, abs=1e-6)
+    assert 0.0 <= at.x <= 40.0 and 0.0 <= at.y <= 40.0
+
+
+def test_no_density_given_is_stored_as_automatic(doc):
+    feature = medial_app.make_medial_axis(add_box(doc))
+    assert (feature.Spacing.Value, feature.Samples) == (0.0, 0)
+    assert feature.Status == "ok" and feature.SampleCount > 0
+
+
+def test_runs_from_the_package_it_should(doc):
+    # tools/check_deb.sh runs these tests from the unpacked .deb and names where cadmedial must be.
+    expected = os.environ.get("CADMEDIAL_EXPECT_PACKAGE")
+    if not expected:
+        pytest.skip("CADMEDIAL_EXPECT_PACKAGE not set (only tools/check_deb.sh sets it)")
+    assert os.path.dirname(os.path.abspath(cadmedial.__file__)) == os.path.abspath(expected)
+    assert os.path.dirname(os.path.abspath(cadmedial._core.__file__)) == os.path.abspath(expected)

@@ -47,7 +47,8 @@ def smoke(tmp_path_factory):
     keep = os.environ.get("CADMEDIAL_SCREENSHOT_DIR")
     if keep:
         os.makedirs(keep, exist_ok=True)
-        for name in ("workbench.png", "view.png", "report.json"):
+        for name in ("workbench.png", "view.png", "panel.png", "face_message.png", "reopened.png",
+                     "reopened_workbench.png", "thinnest_wall.png", "report.json"):
             if (out / name).exists():
                 shutil.copy(out / name, keep)
     assert "exception" not in report, report["exception"]
@@ -63,11 +64,15 @@ def test_workbench_activates(smoke):
 def test_command_is_active_only_with_a_solid_selected(smoke):
     assert smoke["create_active_without_selection"] is False
     assert smoke["create_active_with_box"] is True
-    assert smoke["create_active_with_face"] is False
+    # Active with a face too: clicking says why it cannot be used, instead of a greyed button.
+    assert smoke["create_active_with_face"] is True
+    assert "not a solid" in smoke["face_message"], smoke["face_message"]
+    assert smoke["dialog_open_for_face"] is False
 
 
 def test_task_panel_previews_the_sample_count(smoke):
     assert smoke["task_dialog_open"] is True
+    assert smoke["mode_default"] == "automatic"
     # A 40 x 20 x 10 box: preview follows the spin box. It shows the count the compute will use
     # (the engine calibrates the spacing to within 15 % of the target).
     def shown(text):
@@ -125,10 +130,28 @@ def test_stop_cancels_the_compute_and_adds_nothing(smoke):
     assert smoke["stopped_message"].startswith("Stopped")
     assert smoke["objects_added_by_stop"] == 0
     assert smoke["dialog_open_after_reject"] is False
+    assert smoke["dialog_open_after_one_cancel"] is False
+    assert smoke["objects_added_by_cancel"] == 0
+
+
+def test_panel_fits_the_combo_view(smoke):
+    # FreeCAD's default Combo View is about 240 px wide: the panel needs no more, Stop shows.
+    assert smoke["panel_min_width"] <= 240, smoke["panel_min_width"]
+    assert smoke["stop_visible"] is True
+
+
+def test_picked_point_shows_its_radius(smoke):
+    assert "medial radius" in smoke["pick_message"]
+
+
+def test_reopened_document_keeps_its_colours(smoke):
+    assert smoke["reopened_coloured_pixels_sampled"] > 1000
+    assert smoke["reopened_legend"] is not None and "Medial radius" in smoke["reopened_legend"]
 
 
 def test_task_panel_edits_an_existing_feature(smoke):
     assert smoke["edit_panel_for"] == "MedialAxis"
+    assert smoke["edit_mode"] == "samples"  # the feature was made with 4000 samples
     assert smoke["edited"] == {"theta": 10.0, "refine": False, "status": "ok", "dialog_open": False}
 
 
@@ -137,3 +160,11 @@ def test_console_one_liner_gets_the_coloured_view(smoke):
     assert console["proxy"] == "ViewProviderMedialAxis"
     assert console["coloring"] is True
     assert console["colors"] == console["points"] > 0
+
+
+def test_one_click_zooms_onto_the_thinnest_wall(smoke):
+    wall = smoke["thinnest_wall"]
+    assert wall["thickness"] == pytest.approx(1.0, rel=0.05)
+    # The camera looks at the wall with a field 40 wall thicknesses high.
+    height = float(re.search(r"height ([-\d.e]+)", wall["camera"]).group(1))
+    assert height == pytest.approx(40.0 * wall["thickness"], rel=0.01)

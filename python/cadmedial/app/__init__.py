@@ -7,8 +7,9 @@ The GUI attaches its view providers through ``view_provider_factories`` (filled 
 ``cadmedial.gui`` when it is imported), so that this package stays free of GUI code.
 """
 
-from .medial_axis import MedialAxis, make_medial_axis, medial_result
+from .medial_axis import MedialAxis, make_medial_axis
 from .medial_shape import MedialShape, make_medial_shape
+from .results import StoredResult, medial_result, prepare_result, store_result
 from .registry import is_medial_axis, view_provider_factories
 
 
@@ -18,4 +19,5 @@ def export_medial_axis(obj, path):
 
 
 __all__ = ["MedialAxis", "MedialShape", "make_medial_axis", "make_medial_shape", "medial_result",
-           "export_medial_axis", "is_medial_axis", "view_provider_factories"]
+           "export_medial_axis", "is_medial_axis", "view_provider_factories", "StoredResult",
+           "prepare_result", "store_result"]

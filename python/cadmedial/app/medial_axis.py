@@ -14,20 +14,18 @@ The 1-D edges of the axis (where it is a curve no face carries) cannot be shown 
 feature: EdgeCount says how many there are, and the MedialShape (Part) holds them as edges.
 """
 
-import os
-import shutil
-import tempfile
 import time
 
 import FreeCAD as App
-import Mesh
 import Part
 
 import cadmedial
 from cadmedial.api import refines_by_default
-from cadmedial.colormap import colors_of
 
+from . import registry
 from .registry import attach_view_provider
+from .medial_shape import make_medial_shape
+from .results import medial_result, prepare_result, store_result  # noqa: F401 (medial_result: API)
 
 INPUTS = "Medial Axis"
 OUTPUTS = "Result"
@@ -39,14 +37,18 @@ LATER_COUNTS = [("App::PropertyInteger", "EdgeCount",
                  "1-D edges of the medial mesh (segments of the axis that no face carries)"),
                 ("App::PropertyInteger", "Refinements",
                  "Times a solid was sampled again, finer, because its axis's topology was wrong "
-                 "(the most over the solids)")]
+                 "(the most over the solids)"),
+                ("App::PropertyLength", "ThinnestWall",
+                 "Thickness of the thinnest wall the samples found (0: no wall under 2 spacings)"),
+                ("App::PropertyVector", "ThinnestWallAt", "Where that thinnest wall is")]
 REFINE_DOC = ("Sample a solid again with 2.5 times the samples (at most twice) where its medial "
               "axis's Euler characteristic is not the solid's")
 
 
 class MedialAxis:
     """Proxy of the MedialAxis feature. Its execute() computes; a failure is reported in the
-    report view and in Status, and the last good result stays."""
+    report view and in Status, the object gets FreeCAD's error mark, and the last good result
+    stays."""
 
     Type = "MedialAxis"
 
@@ -57,7 +59,8 @@ class MedialAxis:
         add("App::PropertyLink", "Source", INPUTS, "The solid (or shape of solids) to compute the medial axis of")
         add("App::PropertyLength", "Spacing", INPUTS, "Boundary sample spacing; 0 derives it from Samples")
         add("App::PropertyInteger", "Samples", INPUTS,
-            "Approximate number of boundary samples, used when Spacing is 0; 0 means 20000")
+            "Approximate number of boundary samples, used when Spacing is 0; both 0: automatic "
+            "density (as dense as the part needs)")
         add("App::PropertyFloat", "Theta", INPUTS, "Angle condition threshold in degrees, in (0, 90)")
         add("App::PropertyFloat", "Rho", INPUTS, "Ratio condition threshold, > 0")
         add("App::PropertyBool", "Refine", INPUTS, REFINE_DOC)
@@ -107,13 +110,15 @@ class MedialAxis:
     def execute(self, obj):
         started = time.perf_counter()
         try:
-            result = self._take_pending(obj) or compute_for(obj)
+            stored = self._take_pending(obj) or compute_for(obj)
         except Exception as error:  # any failure: report it, keep the last good result
             obj.Status = "failed: %s" % error
             App.Console.PrintError("%s: medial axis not updated: %s\n" % (obj.Label, error))
-            return
-        self.result = result
-        store_result(obj, result)
+            # Raised, FreeCAD marks the object in error in the tree (the properties stay as
+            # they were): the Status says why.
+            raise FeatureError("%s: %s" % (obj.Label, error)) from None
+        result = self.result = getattr(stored, "result", stored)  # StoredResult or not
+        store_result(obj, stored)
         # The engine's total: a result computed before the object existed took no time here.
         total = result.stats.get("timings", {}).get("total")
         obj.ComputeTime = float(total) if total is not None else time.perf_counter() - started
@@ -131,6 +136,10 @@ class MedialAxis:
         if pending is not None and pending[0] == parameters_of(obj):
             return pending[1]
         return None
+
+
+class FeatureError(RuntimeError):
+    """A MedialAxis recompute failed (FreeCAD shows the object with its error mark)."""
 
 
 def add_later_counts(obj):
@@ -161,9 +170,15 @@ def compute_shape(shape, spacing, samples, theta, rho, label, refine=None):
         raise cadmedial.InvalidInput("the source has no shape (recompute it first?)")
     spacing = spacing if spacing > 0 else None
     samples = samples if (spacing is None and samples > 0) else None
+    params = dict(spacing=spacing, samples=samples, theta=theta, rho=rho, refine=refine)
+    if App.GuiUp and registry.background_runner is not None:
+        # The GUI computes, and builds the mesh and colours, in a thread and keeps drawing,
+        # with a progress dialog and Stop. Returns a StoredResult.
+        core = cadmedial.read_shape(shape)  # the Part.Shape is read here, in this thread
+        return registry.run_long("Medial axis of %s" % label, lambda progress: prepare_result(
+            cadmedial.compute(core, progress=progress, **params)))
     if not App.GuiUp:
-        return cadmedial.compute(shape, spacing=spacing, samples=samples, theta=theta, rho=rho,
-                                 refine=refine)
+        return cadmedial.compute(shape, **params)
     with StatusBarProgress("Medial axis of %s" % label) as progress:
         return cadmedial.compute(shape, spacing=spacing, samples=samples, theta=theta, rho=rho,
                                  refine=refine, progress=progress)
@@ -192,52 +207,6 @@ class StatusBarProgress:
     def __exit__(self, *exc):
         self.indicator.stop()
         return False
-
-
-def store_result(obj, result):
-    """Puts a MedialAxisResult into obj's Mesh, colours, counts and ResultFile."""
-    triangles = result.triangles()
-    points = [App.Vector(*p) for p in result.vertices.tolist()]
-    mesh = Mesh.Mesh()
-    # False: no manifold check. The medial surface is non-manifold where sheets meet, and the
-    # check (also done by Mesh.Mesh((points, facets))) would delete every facet at a junction.
-    mesh.addFacets((points, [tuple(t) for t in triangles.tolist()]), False)
-    obj.Mesh = mesh
-    if result.num_vertices:
-        low, high = float(result.radius.min()), float(result.radius.max())
-    else:
-        low = high = 0.0
-    obj.RadiusMin, obj.RadiusMax = low, high
-    obj.RadiusColors = [tuple(c) for c in colors_of(result.radius, low, high).tolist()]
-    stats = result.stats
-    obj.SampleCount = int(stats.get("samples", 0))
-    solids = stats.get("solids", [])
-    obj.SpacingUsed = min((float(s["spacing"]) for s in solids if "spacing" in s),
-                          default=float(stats.get("spacing", 0.0)))
-    obj.Refinements = max((int(s.get("refinements", 0)) for s in solids), default=0)
-    obj.VertexCount = result.num_vertices
-    obj.FaceCount = result.num_faces
-    obj.EdgeCount = result.num_edges
-    obj.Timings = ["%s: %.3f s" % (stage, seconds)
-                   for stage, seconds in stats.get("timings", {}).items()]
-    folder = tempfile.mkdtemp(prefix="cadmedial-")
-    try:
-        path = os.path.join(folder, "medial_axis.ply")
-        result.save(path)
-        obj.ResultFile = path  # FreeCAD copies it into the document's own folder
-    finally:
-        shutil.rmtree(folder, ignore_errors=True)
-
-
-def medial_result(obj):
-    """The MedialAxisResult of a MedialAxis object: in memory after a compute, else read from
-    its ResultFile (after reopening a document). Raises cadmedial.InvalidInput when there is none."""
-    proxy = obj.Proxy
-    if proxy.result is None:
-        if not obj.ResultFile or not os.path.isfile(obj.ResultFile):
-            raise cadmedial.InvalidInput("%s has no result yet: recompute it" % obj.Label)
-        proxy.result = cadmedial.load(obj.ResultFile)
-    return proxy.result
 
 
 def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, shape=False,
@@ -271,10 +240,9 @@ def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, sha
     obj.Theta = theta
     obj.Rho = rho
     obj.Refine = bool(refine)
-    proxy.pending = (parameters_of(obj), result)
+    proxy.pending = (parameters_of(obj), result)  # a MedialAxisResult or a StoredResult
     attach_view_provider(obj, MedialAxis.Type)
     doc.recompute([obj])  # unlike obj.recompute(), this also clears the object's Touched flag
     if shape:
-        from .medial_shape import make_medial_shape  # here: medial_shape imports this module
         make_medial_shape(obj)
     return obj

@@ -8,8 +8,8 @@ Saved inside .FCStd files, keep them: module ``cadmedial.app.medial_shape``, cla
 import FreeCAD as App
 import Part
 
-from .medial_axis import medial_result
-from .registry import attach_view_provider
+from .results import medial_result
+from .registry import attach_view_provider, run_long
 
 
 class MedialShape:
@@ -32,10 +32,13 @@ class MedialShape:
             if obj.Base is None:
                 raise ValueError("no Base: link a MedialAxis object")
             shape = Part.Shape()
-            shape.importBrepFromString(medial_result(obj.Base).to_brep(), False)
+            result = medial_result(obj.Base)
+            # to_brep builds the faces in C++ without the GIL: in the GUI, in a thread.
+            brep = run_long("Faces of %s" % obj.Base.Label, lambda progress: result.to_brep())
+            shape.importBrepFromString(brep, False)
         except Exception as error:  # report, keep the last good shape
             App.Console.PrintError("%s: shape not updated: %s\n" % (obj.Label, error))
-            return
+            raise RuntimeError("%s: %s" % (obj.Label, error)) from None  # FreeCAD's error mark
         obj.Shape = shape
 
 

@@ -5,13 +5,17 @@ MedialAxis_MakeShape) and plugs the view providers into cadmedial.app, so that
 cadmedial.app.make_medial_axis() in the Python console gets the coloured view too.
 """
 
-from cadmedial.app import view_provider_factories
+from cadmedial.app import registry, view_provider_factories
 
-from . import commands
+from . import commands, picking
+from .busy import breathe, run_with_progress
 from .view_provider import ViewProviderMedialAxis, ViewProviderMedialShape
 
 view_provider_factories["MedialAxis"] = ViewProviderMedialAxis
 view_provider_factories["MedialShape"] = ViewProviderMedialShape
+registry.background_runner = run_with_progress
+registry.breathe = breathe
 commands.register()
+picking.install()
 
 __all__ = ["ViewProviderMedialAxis", "ViewProviderMedialShape", "commands"]

@@ -1,4 +1,5 @@
-"""The workbench's commands: MedialAxis_Create, MedialAxis_Export, MedialAxis_MakeShape.
+"""The workbench's commands: MedialAxis_Create, MedialAxis_Export, MedialAxis_MakeShape,
+MedialAxis_ThinnestWall.
 They gather the selection and call cadmedial.app; no geometry here."""
 
 import os
@@ -6,11 +7,47 @@ import os
 import FreeCAD as App
 import FreeCADGui as Gui
 import Part
-from PySide2 import QtWidgets
+from PySide2 import QtCore, QtWidgets
 
+import cadmedial
 from cadmedial.app import export_medial_axis, is_medial_axis, make_medial_shape
 
 from .icons import icon_path
+
+
+# The last message box shown (tests read and close it; it does not block).
+last_message = None
+
+
+def show_message(title, text, icon=QtWidgets.QMessageBox.Warning):
+    """A message box that does not block the caller (tests and macros go on)."""
+    global last_message
+    box = QtWidgets.QMessageBox(icon, title, text, QtWidgets.QMessageBox.Ok, Gui.getMainWindow())
+    box.setAttribute(QtCore.Qt.WA_DeleteOnClose)
+    box.open()
+    last_message = box
+    return box
+
+
+def why_not_a_source(obj):
+    """None when obj's shape holds a solid the engine can read, else why not (the engine's
+    words for a solid it refuses)."""
+    try:
+        shape = Part.getShape(obj)
+    except Exception:
+        shape = None
+    if shape is None or shape.isNull():
+        return "%s has no shape." % obj.Label
+    if not shape.Solids:
+        parts = shape.SubShapes if shape.ShapeType == "Compound" else [shape]
+        kinds = sorted({part.ShapeType.lower() for part in parts}) or ["nothing"]
+        return ("%s is not a solid (it is a %s): the medial axis needs a closed solid."
+                % (obj.Label, " and a ".join(kinds)))
+    try:
+        cadmedial.read_shape(shape)
+    except cadmedial.Error as error:
+        return "%s cannot be used: %s" % (obj.Label, error)
+    return None
 
 
 def solid_sources():
@@ -37,13 +74,26 @@ class CreateMedialAxis:
                            "(one parametric object per selected object)"}
 
     def IsActive(self):
-        return App.ActiveDocument is not None and bool(solid_sources())
+        # Active with anything selected: a selection that cannot be used gets a message saying
+        # why (a greyed button says nothing).
+        return App.ActiveDocument is not None and bool(Gui.Selection.getSelection())
 
     def Activated(self):
         from .task_panel import TaskPanelMedialAxis
-        sources = solid_sources()
-        if sources:
-            Gui.Control.showDialog(TaskPanelMedialAxis(sources))
+        selection = Gui.Selection.getSelection()
+        reasons = [why for why in map(why_not_a_source, selection) if why]
+        if reasons:
+            show_message("Medial axis", "\n\n".join(reasons))
+            App.Console.PrintWarning("Medial axis: %s\n" % " ".join(reasons))
+            return
+        if Gui.Control.activeDialog():
+            show_message("Medial axis", "Close the open task panel first.")
+            return
+        try:
+            Gui.Control.showDialog(TaskPanelMedialAxis(selection))
+        except Exception as error:  # never a traceback: say it
+            show_message("Medial axis", str(error))
+            App.Console.PrintError("Medial axis: %s\n" % error)
 
 
 class ExportMedialAxis:
@@ -59,7 +109,9 @@ class ExportMedialAxis:
 
     def Activated(self):
         obj = selected_medial_axes()[0]
-        start = os.path.join(os.path.expanduser("~"), obj.Label.replace(" ", "_") + ".ply")
+        # Beside the document when it was saved, else in the home folder.
+        folder = os.path.dirname(obj.Document.FileName) if obj.Document.FileName else ""
+        start = os.path.join(folder or os.path.expanduser("~"), obj.Label.replace(" ", "_") + ".ply")
         path, chosen = QtWidgets.QFileDialog.getSaveFileName(
             Gui.getMainWindow(), "Export medial axis", start, self.FILTERS)
         if not path:
@@ -89,15 +141,61 @@ class MakeMedialShape:
         objects = selected_medial_axes()
         doc = objects[0].Document
         doc.openTransaction("Medial surface as Part shape")
-        for obj in objects:
-            make_medial_shape(obj)
+        try:
+            for obj in objects:
+                make_medial_shape(obj)
+        except Exception as error:  # e.g. Stop in the progress dialog
+            doc.abortTransaction()
+            show_message("Medial surface as Part shape", str(error))
+            return
         doc.commitTransaction()
 
 
+class GoToThinnestWall:
+    """Zooms the 3D view onto the thinnest wall of the selected medial axis (ThinnestWallAt)."""
+
+    def GetResources(self):
+        return {"Pixmap": icon_path("MedialAxis_Create.svg"),
+                "MenuText": "Go to the thinnest wall",
+                "ToolTip": "Zoom the view onto the thinnest wall the selected medial axis found"}
+
+    def IsActive(self):
+        return len(selected_medial_axes()) == 1 and Gui.ActiveDocument is not None
+
+    def Activated(self):
+        obj = selected_medial_axes()[0]
+        thickness = obj.ThinnestWall.Value if "ThinnestWall" in obj.PropertiesList else 0.0
+        if thickness <= 0:
+            show_message("Thinnest wall", "%s found no wall thinner than two sample spacings."
+                         % obj.Label, QtWidgets.QMessageBox.Information)
+            return
+        at = obj.ThinnestWallAt
+        zoom_onto(Gui.ActiveDocument.ActiveView, at, 40.0 * thickness)
+        Gui.getMainWindow().statusBar().showMessage(
+            "%s: thinnest wall %.4g mm at (%.4g, %.4g, %.4g)" % (obj.Label, thickness, at.x, at.y, at.z),
+            15000)
+
+
+def zoom_onto(view, point, size):
+    """Points an orthographic camera, in the view's current orientation, at point, showing a
+    field `size` mm high."""
+    rotation = view.getCameraOrientation()
+    back = rotation.multVec(App.Vector(0, 0, 1))
+    position = point + back * (10.0 * size)
+    axis, angle = rotation.Axis, rotation.Angle
+    view.setCamera("#Inventor V2.1 ascii\nOrthographicCamera {\n position %r %r %r\n "
+                   "orientation %r %r %r %r\n nearDistance %r\n farDistance %r\n "
+                   "focalDistance %r\n height %r\n}\n" % (
+                       position.x, position.y, position.z, axis.x, axis.y, axis.z, angle,
+                       0.1 * size, 100.0 * size, 10.0 * size, size))
+
+
 COMMANDS = {"MedialAxis_Create": CreateMedialAxis, "MedialAxis_Export": ExportMedialAxis,
-            "MedialAxis_MakeShape": MakeMedialShape}
+            "MedialAxis_MakeShape": MakeMedialShape, "MedialAxis_ThinnestWall": GoToThinnestWall}
 
 
-def register():
-    for name, command in COMMANDS.items():
+def register(commands=None):
+    """Registers COMMANDS (or the given {name: class}): another module adds its own with
+    register({"MedialAxis_Thickness": ...}) and lists the name in InitGui's toolbar."""
+    for name, command in (commands or COMMANDS).items():
         Gui.addCommand(name, command())

@@ -1,5 +1,6 @@
 """Where the SVG icons are, in an installed addon (Mod/MedialAxis/Resources/icons, beside the
-package) and in a source checkout (Resources/icons at the repository root, python/ beside it)."""
+package), in the package itself (cadmedial/Resources/icons, as `cmake --install` puts it) and in a
+source checkout (Resources/icons at the repository root, python/ beside it)."""
 
 import os
 
@@ -9,6 +10,7 @@ _PACKAGE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 def icon_path(name):
     """Absolute path of Resources/icons/<name>; the first candidate when none exists."""
     candidates = [os.path.join(_PACKAGE, os.pardir, "Resources", "icons", name),
+                  os.path.join(_PACKAGE, "Resources", "icons", name),  # the .deb's package
                   os.path.join(_PACKAGE, os.pardir, os.pardir, "Resources", "icons", name)]
     for path in candidates:
         if os.path.isfile(path):

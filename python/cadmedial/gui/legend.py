@@ -11,10 +11,12 @@ OBJECT_NAME = "cadmedial_radius_legend"
 
 
 class RadiusLegend(QtWidgets.QFrame):
-    """A vertical viridis bar, small radius at the bottom, with one line per object:
-    "<label>: <min> – <max> mm". Keeps itself in the bottom-right corner of its parent."""
+    """A vertical viridis bar, small radius at the bottom, with TICKS radius ticks in mm beside it
+    (one object) and one line per object: "<label>: <min> – <max> mm". Keeps itself in the
+    bottom-left corner of its parent, clear of FreeCAD's axis triad (bottom right) and
+    navigation cube (top right)."""
 
-    BAR_WIDTH, BAR_HEIGHT, MARGIN = 16, 120, 12
+    BAR_WIDTH, BAR_HEIGHT, MARGIN, TICKS = 16, 120, 12, 5
 
     def __init__(self, parent):
         super().__init__(parent)
@@ -26,20 +28,20 @@ class RadiusLegend(QtWidgets.QFrame):
         self.bar.setFixedSize(self.BAR_WIDTH, self.BAR_HEIGHT)
         self.bar.setPixmap(self._bar_pixmap())
         self.title = QtWidgets.QLabel("<b>Medial radius</b>", self)
-        self.high = QtWidgets.QLabel(self)
-        self.low = QtWidgets.QLabel(self)
+        self.scale = QtWidgets.QWidget(self)  # tick labels, top = high, placed by hand
+        self.scale.setFixedHeight(self.BAR_HEIGHT)
+        self.ticks = [QtWidgets.QLabel(self.scale) for _ in range(self.TICKS)]
         self.lines = QtWidgets.QLabel(self)
-        text = QtWidgets.QVBoxLayout()
-        text.addWidget(self.title)
-        text.addWidget(self.high)
-        text.addStretch(1)
-        text.addWidget(self.lines)
-        text.addStretch(1)
-        text.addWidget(self.low)
-        layout = QtWidgets.QHBoxLayout(self)
+        column = QtWidgets.QHBoxLayout()
+        column.addWidget(self.bar)
+        column.addWidget(self.scale)
+        layout = QtWidgets.QVBoxLayout(self)
         layout.setContentsMargins(8, 8, 8, 8)
-        layout.addWidget(self.bar)
-        layout.addLayout(text)
+        layout.addWidget(self.title)
+        layout.addLayout(column)
+        layout.addWidget(self.lines)
+        # Kept for tests and callers: the top and bottom ticks.
+        self.high, self.low = self.ticks[0], self.ticks[-1]
         parent.installEventFilter(self)
 
     def _bar_pixmap(self):
@@ -57,8 +59,19 @@ class RadiusLegend(QtWidgets.QFrame):
         if not entries:
             self.hide()
             return
-        self.high.setText("max" if len(entries) > 1 else "%.4g mm" % entries[0][2])
-        self.low.setText("min" if len(entries) > 1 else "%.4g mm" % entries[0][1])
+        low, high = (entries[0][1], entries[0][2]) if len(entries) == 1 else (None, None)
+        width = 0
+        for i, tick in enumerate(self.ticks):
+            share = 1.0 - i / (self.TICKS - 1)
+            if low is None:
+                tick.setText("max" if i == 0 else "min" if i == self.TICKS - 1 else "")
+            else:
+                tick.setText("– %.3g mm" % (low + share * (high - low)))
+            tick.adjustSize()
+            y = int((1.0 - share) * (self.BAR_HEIGHT - 1) - tick.height() / 2)
+            tick.move(0, max(0, min(self.BAR_HEIGHT - tick.height(), y)))
+            width = max(width, tick.width())
+        self.scale.setFixedWidth(width)
         self.lines.setText("<br>".join("%s: %.4g – %.4g mm" % entry for entry in entries))
         self.adjustSize()
         self._place()
@@ -67,12 +80,11 @@ class RadiusLegend(QtWidgets.QFrame):
 
     def text(self):
         """What the legend says, for tests."""
-        return " ".join(label.text() for label in (self.title, self.high, self.lines, self.low))
+        return " ".join(label.text() for label in [self.title] + self.ticks + [self.lines])
 
     def _place(self):
         parent = self.parentWidget()
-        self.move(parent.width() - self.width() - self.MARGIN,
-                  parent.height() - self.height() - self.MARGIN)
+        self.move(self.MARGIN, parent.height() - self.height() - self.MARGIN)
 
     def eventFilter(self, watched, event):
         if event.type() == QtCore.QEvent.Resize:
@@ -87,9 +99,17 @@ def _view_widgets(doc):
     widgets = []
     for view in gui_doc.mdiViewsOfType("Gui::View3DInventor"):
         try:
-            widgets.append(view.graphicsView())
-        except Exception:  # a view that is being closed
+            widget = view.graphicsView()
+            widget.objectName()  # raises on a wrapper PySide kept of a deleted widget
+            widgets.append(widget)
+        except Exception:  # a view that is being closed, or a stale wrapper
             continue
+    if not widgets and gui_doc.mdiViewsOfType("Gui::View3DInventor"):
+        # After a document was closed, PySide can hand back its deleted view's wrapper for the
+        # new one: find the new view's widget through the main window instead.
+        for window in Gui.getMainWindow().findChildren(QtWidgets.QMdiSubWindow):
+            if window.windowTitle().split(" : ")[0] == doc.Label:
+                widgets.extend(window.findChildren(QtWidgets.QGraphicsView))
     return widgets
 
 
@@ -100,7 +120,8 @@ def legend_of(widget):
 
 def refresh(doc, leaving=None):
     """Shows the ranges of the visible MedialAxis objects of doc (but `leaving`, being deleted)
-    in a legend over each of its 3D views; hides the legend when there is none."""
+    in a legend over each of its 3D views; hides the legend when there is none. Returns whether
+    it showed one (False also when the document has no 3D view yet)."""
     entries = []
     for obj in doc.Objects if doc is not None else []:
         if obj is leaving or not is_medial_axis(obj) or not obj.VertexCount:
@@ -108,10 +129,12 @@ def refresh(doc, leaving=None):
         if obj.ViewObject is None or not obj.ViewObject.Visibility:
             continue
         entries.append((obj.Label, obj.RadiusMin.Value, obj.RadiusMax.Value))
-    for widget in _view_widgets(doc):
+    widgets = _view_widgets(doc)
+    for widget in widgets:
         legend = legend_of(widget)
         if legend is None:
             if not entries:
                 continue
             legend = RadiusLegend(widget)
         legend.set_entries(entries)
+    return bool(widgets) and bool(entries)

@@ -10,10 +10,28 @@ import cadmedial
 from cadmedial.app import make_medial_axis
 
 from .icons import icon_path
-from .worker import ComputeJob
+from .worker import ComputeJob, Job
 
 # The panel on screen, for tests and macros (None when closed).
 active_panel = None
+MODES = [("Automatic", "automatic"), ("Samples", "samples"), ("Spacing", "spacing")]
+MAX_SAMPLES = 20_000_000  # the engine's limit
+ESTIMATE_DELAY_MS = 300
+
+
+def _wrapping(text):
+    label = QtWidgets.QLabel(text)
+    label.setWordWrap(True)
+    label.setMinimumWidth(0)
+    label.setSizePolicy(QtWidgets.QSizePolicy.Ignored, QtWidgets.QSizePolicy.Preferred)
+    return label
+
+
+def _form_layout(parent):
+    rows = QtWidgets.QFormLayout(parent)
+    rows.setRowWrapPolicy(QtWidgets.QFormLayout.WrapLongRows)
+    rows.setFieldGrowthPolicy(QtWidgets.QFormLayout.AllNonFixedFieldsGrow)
+    return rows
 
 
 class TaskPanelMedialAxis:
@@ -25,29 +43,55 @@ class TaskPanelMedialAxis:
         self.edit = edit
         self.job = None
         self.shapes = [cadmedial.read_shape(Part.getShape(s)) for s in self.sources]
+        self.estimate = None
+        self.estimate_stale = False
+        self.close_when_stopped = False
+        self.estimate_timer = QtCore.QTimer()
+        self.estimate_timer.setSingleShot(True)
+        self.estimate_timer.setInterval(ESTIMATE_DELAY_MS)
+        self.estimate_timer.timeout.connect(self._start_estimate)
+        self.estimate_poll = QtCore.QTimer()
+        self.estimate_poll.setInterval(30)
+        self.estimate_poll.timeout.connect(self._poll_estimate)
         self.form = self._build_form()
         self.timer = QtCore.QTimer()
         self.timer.setInterval(100)
         self.timer.timeout.connect(self._poll)
         self._load_parameters()
-        self.update_preview()
         active_panel = self
 
     # -- form -------------------------------------------------------------------------------
     def _build_form(self):
+        # Sized for FreeCAD's default Combo View (about 240 px) and 200 % scaling: one column,
+        # short labels, texts that wrap, every button on a row of its own.
         form = QtWidgets.QWidget()
         form.setWindowTitle("Medial axis")
         form.setWindowIcon(QtGui.QIcon(icon_path("MedialAxis_Create.svg")))
+        form.setMinimumWidth(0)
         layout = QtWidgets.QVBoxLayout(form)
         names = ", ".join(s.Label for s in self.sources)
-        layout.addWidget(QtWidgets.QLabel("<b>Solids:</b> %s" % names))
+        layout.addWidget(_wrapping("<b>Solids:</b> %s" % names))
+        # Progress and Stop first: seen without scrolling, even at 200 % scaling.
+        self.progress = QtWidgets.QProgressBar()
+        self.progress.setRange(0, 1000)
+        self.progress.setTextVisible(False)
+        layout.addWidget(self.progress)
+        self.stop = QtWidgets.QPushButton("Stop")
+        self.stop.setEnabled(False)
+        self.stop.clicked.connect(self.cancel)
+        layout.addWidget(self.stop)
+        self.stage = _wrapping("")
+        layout.addWidget(self.stage)
 
-        density = QtWidgets.QGroupBox("Boundary sampling")
-        grid = QtWidgets.QGridLayout(density)
-        self.by_samples = QtWidgets.QRadioButton("Samples")
-        self.by_spacing = QtWidgets.QRadioButton("Spacing")
+        density = QtWidgets.QGroupBox("Sampling")
+        rows = _form_layout(density)
+        self.mode = QtWidgets.QComboBox()
+        for text, key in MODES:
+            self.mode.addItem(text, key)
+        self.mode.setToolTip("Automatic: as dense as the part needs. Samples: about this many "
+                             "boundary samples. Spacing: this distance between samples.")
         self.samples = QtWidgets.QSpinBox()
-        self.samples.setRange(100, 50_000_000)
+        self.samples.setRange(100, MAX_SAMPLES)
         self.samples.setSingleStep(1000)
         self.samples.setGroupSeparatorShown(True)
         self.samples.setToolTip("Approximate number of boundary samples of each source")
@@ -56,21 +100,23 @@ class TaskPanelMedialAxis:
         self.spacing.setDecimals(4)
         self.spacing.setSuffix(" mm")
         self.spacing.setToolTip("Distance between boundary samples")
-        self.preview = QtWidgets.QLabel()
-        grid.addWidget(self.by_samples, 0, 0)
-        grid.addWidget(self.samples, 0, 1)
-        grid.addWidget(self.by_spacing, 1, 0)
-        grid.addWidget(self.spacing, 1, 1)
-        grid.addWidget(self.preview, 2, 0, 1, 2)
-        self.refine = QtWidgets.QCheckBox("Sample finer where the axis's topology is wrong")
-        self.refine.setToolTip("Where a solid's medial axis has holes or extra loops (its Euler "
+        for box in (self.mode, self.samples, self.spacing):
+            box.setMinimumWidth(60)
+            box.setSizePolicy(QtWidgets.QSizePolicy.Expanding, QtWidgets.QSizePolicy.Fixed)
+        self.preview = _wrapping("")
+        rows.addRow("Density", self.mode)
+        rows.addRow("Samples", self.samples)
+        rows.addRow("Spacing", self.spacing)
+        rows.addRow(self.preview)
+        self.refine = QtWidgets.QCheckBox("Refine where needed")
+        self.refine.setToolTip("Sample finer where the axis's topology is wrong: where a solid's medial axis has holes or extra loops (its Euler "
                                "characteristic is not the solid's), sample it again with 2.5 "
                                "times the samples, at most twice")
-        grid.addWidget(self.refine, 3, 0, 1, 2)
+        rows.addRow(self.refine)
         layout.addWidget(density)
 
-        selection = QtWidgets.QGroupBox("Selection of medial faces")
-        grid = QtWidgets.QGridLayout(selection)
+        selection = QtWidgets.QGroupBox("Medial faces")
+        rows = _form_layout(selection)
         self.theta = QtWidgets.QDoubleSpinBox()
         self.theta.setRange(0.1, 89.9)
         self.theta.setSuffix(" °")
@@ -80,34 +126,22 @@ class TaskPanelMedialAxis:
         self.rho.setRange(0.01, 1000.0)
         self.rho.setToolTip("Ratio condition: keep a facet whose circumradius exceeds rho times "
                             "its dual edge's length (paper, section 3)")
-        grid.addWidget(QtWidgets.QLabel("Theta"), 0, 0)
-        grid.addWidget(self.theta, 0, 1)
-        grid.addWidget(QtWidgets.QLabel("Rho"), 1, 0)
-        grid.addWidget(self.rho, 1, 1)
+        for box in (self.theta, self.rho):
+            box.setMinimumWidth(60)
+        rows.addRow("Theta", self.theta)
+        rows.addRow("Rho", self.rho)
         layout.addWidget(selection)
 
-        self.make_shape = QtWidgets.QCheckBox("Also make a Part shape of planar faces")
+        self.make_shape = QtWidgets.QCheckBox("Also make a Part shape")
+        self.make_shape.setToolTip("A Part object of planar faces, one per medial polygon")
         layout.addWidget(self.make_shape)
         self.make_shape.setVisible(self.edit is None)
 
-        run = QtWidgets.QHBoxLayout()
-        self.progress = QtWidgets.QProgressBar()
-        self.progress.setRange(0, 1000)
-        self.progress.setTextVisible(False)
-        self.stop = QtWidgets.QPushButton("Stop")
-        self.stop.setEnabled(False)
-        self.stop.clicked.connect(self.cancel)
-        run.addWidget(self.progress)
-        run.addWidget(self.stop)
-        layout.addLayout(run)
-        self.stage = QtWidgets.QLabel()
-        self.stage.setWordWrap(True)
-        layout.addWidget(self.stage)
         layout.addStretch(1)
 
         for widget in (self.samples, self.spacing):
             widget.valueChanged.connect(self.update_preview)
-        self.by_samples.toggled.connect(self._mode_changed)
+        self.mode.currentIndexChanged.connect(self._mode_changed)
         return form
 
     def _load_parameters(self):
@@ -120,42 +154,81 @@ class TaskPanelMedialAxis:
         self.samples.setValue(samples or 20000)
         if spacing > 0:
             self.spacing.setValue(spacing)
-            self.by_spacing.setChecked(True)
+            self.choose_mode("spacing")
+        elif samples > 0:
+            self.choose_mode("samples")
         else:
-            self.spacing.setValue(self._planned_spacing(None, self.samples.value()))
-            self.by_samples.setChecked(True)
+            self.choose_mode("automatic")
         self._mode_changed()
 
+    def choose_mode(self, key):
+        """Density mode: "automatic", "samples" or "spacing"."""
+        self.mode.setCurrentIndex([k for _text, k in MODES].index(key))
+
+    def mode_key(self):
+        return self.mode.currentData()
+
     def _mode_changed(self, *_):
-        self.samples.setEnabled(self.by_samples.isChecked())
-        self.spacing.setEnabled(self.by_spacing.isChecked())
+        running = self.job is not None
+        self.samples.setEnabled(self.mode_key() == "samples" and not running)
+        self.spacing.setEnabled(self.mode_key() == "spacing" and not running)
         self.update_preview()
 
     def parameters(self):
-        """Keyword arguments of cadmedial.compute from the form."""
-        by_spacing = self.by_spacing.isChecked()
-        return {"spacing": self.spacing.value() if by_spacing else None,
-                "samples": None if by_spacing else self.samples.value(),
+        """Keyword arguments of cadmedial.compute from the form (Automatic gives neither
+        spacing nor samples: the engine picks the density)."""
+        key = self.mode_key()
+        return {"spacing": self.spacing.value() if key == "spacing" else None,
+                "samples": self.samples.value() if key == "samples" else None,
                 "theta": self.theta.value(), "rho": self.rho.value(),
                 "refine": self.refine.isChecked()}
 
-    def _planned_spacing(self, spacing, samples):
-        plans = [cadmedial.plan_sampling(s, spacing=spacing, samples=samples) for s in self.shapes]
-        return max(p.spacing for p in plans) if plans else 1.0
-
     def update_preview(self, *_):
-        p = self.parameters()
-        try:
-            plans = [cadmedial.plan_sampling(s, spacing=p["spacing"], samples=p["samples"])
-                     for s in self.shapes]
-        except cadmedial.Error as error:
-            self.preview.setText("<span style='color:#b00'>%s</span>" % error)
+        """Asks for a new estimate, EstimateDelay ms after the last change: typing 3000000 key
+        by key makes one estimate, and it runs in a thread (the engine plans without the GIL)."""
+        self.preview.setText("estimating…")
+        self.estimate_timer.start()
+
+    def _start_estimate(self):
+        if self.estimate is not None and not self.estimate.done:
+            self.estimate_stale = True  # the one running is for older values: run again after
             return
+        p = self.parameters()
+        shapes = list(self.shapes)
+        self.estimate_stale = False
+        self.estimate = Job(lambda progress: [
+            cadmedial.plan_sampling(s, spacing=p["spacing"], samples=p["samples"]) for s in shapes])
+        self.estimate.mode = self.mode_key()
+        self.estimate.start()
+        self.estimate_poll.start()
+
+    def _poll_estimate(self):
+        job = self.estimate
+        if job is None or not job.done:
+            return
+        self.estimate_poll.stop()
+        if self.estimate_stale:
+            self._start_estimate()
+            return
+        if job.error is not None:
+            self.preview.setText("<span style='color:#b00'>%s</span>" % job.error)
+            return
+        plans = job.value
         total = sum(plan.estimated_samples for plan in plans)
-        low = min(plan.spacing for plan in plans)
-        high = max(plan.spacing for plan in plans)
+        low = min((plan.spacing for plan in plans), default=0.0)
+        high = max((plan.spacing for plan in plans), default=0.0)
         spacing = "%.4g mm" % low if abs(high - low) <= 1e-9 * high else "%.4g–%.4g mm" % (low, high)
         self.preview.setText("≈ {:,} samples, spacing {}".format(total, spacing))
+        if job.mode != "spacing" and high > 0:
+            # The spacing box shows the spacing the other modes give, never a stale one.
+            self.spacing.blockSignals(True)
+            self.spacing.setValue(high)
+            self.spacing.blockSignals(False)
+
+    def estimate_idle(self):
+        """True when no estimate is pending or running (for tests)."""
+        return (not self.estimate_timer.isActive()
+                and (self.estimate is None or (self.estimate.done and not self.estimate_poll.isActive())))
 
     # -- FreeCAD task dialog interface ------------------------------------------------------
     def getStandardButtons(self):
@@ -173,13 +246,15 @@ class TaskPanelMedialAxis:
         if self.edit is not None:
             return self._apply_edit(p)
         self.job = ComputeJob(self.shapes, p)
+        self.stage.setText("")
         self._set_running(True)
         self.job.start()
         self.timer.start()
         return False  # the dialog closes itself when the job is done
 
     def reject(self):
-        if self.job is not None:
+        if self.job is not None:  # one Cancel: stop, and close once the engine has stopped
+            self.close_when_stopped = True
             self.cancel()
             return False
         self._close()
@@ -192,9 +267,10 @@ class TaskPanelMedialAxis:
 
     # -- running ----------------------------------------------------------------------------
     def _set_running(self, running):
-        for widget in (self.samples, self.spacing, self.by_samples, self.by_spacing, self.theta,
-                       self.rho, self.refine, self.make_shape):
+        for widget in (self.mode, self.theta, self.rho, self.refine, self.make_shape):
             widget.setEnabled(not running)
+        self.samples.setEnabled(False)
+        self.spacing.setEnabled(False)
         if not running:
             self._mode_changed()
         self.stop.setEnabled(running)
@@ -211,6 +287,11 @@ class TaskPanelMedialAxis:
         self.timer.stop()
         self.job = None
         self._set_running(False)
+        if self.close_when_stopped:
+            for stored in job.results:
+                stored.discard()
+            self._close()
+            return
         if job.error is not None:
             if isinstance(job.error, cadmedial.Cancelled):
                 self.stage.setText("Stopped: nothing was added.")
@@ -259,6 +340,8 @@ class TaskPanelMedialAxis:
     def _close(self):
         global active_panel
         active_panel = None
+        self.estimate_timer.stop()
+        self.estimate_poll.stop()
         if self.edit is not None:
             Gui.ActiveDocument.resetEdit()
         else:

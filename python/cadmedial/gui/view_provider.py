@@ -16,6 +16,10 @@ class _StatelessProxy:
 
     def attach(self, vobj):
         self.Object = vobj.Object
+        self.attached(vobj)
+
+    def attached(self, vobj):
+        pass
 
     def __getstate__(self):
         return None
@@ -38,12 +42,30 @@ class ViewProviderMedialAxis(_StatelessProxy):
     def getIcon(self):
         return icon_path("MedialAxis_Create.svg")
 
+    def attached(self, vobj):
+        # Also runs when a saved document is reopened. There the mesh view provider has read
+        # Coloring = True before the colours reached its node, and shows grey: apply them again
+        # once the document is loaded.
+        obj = vobj.Object
+
+        def recolour(tries=20):
+            try:
+                if obj.ViewObject is not None and obj.ViewObject.Coloring:
+                    obj.ViewObject.Coloring = False
+                    obj.ViewObject.Coloring = True
+                # The 3D view of a document being opened comes after its objects: wait for it.
+                if not legend.refresh(obj.Document) and tries > 0:
+                    QtCore.QTimer.singleShot(100, lambda: recolour(tries - 1))
+            except Exception:  # closed or deleted in between: nothing to colour
+                pass
+        QtCore.QTimer.singleShot(0, recolour)
+
     def updateData(self, obj, prop):
         if prop == "RadiusColors" and obj.ViewObject is not None:
             # Switch colouring off and on so that the new colour list is applied to the new mesh.
             obj.ViewObject.Coloring = False
             obj.ViewObject.Coloring = True
-        if prop in ("RadiusColors", "Label"):
+        if prop in ("RadiusColors", "VertexCount", "RadiusMax", "Label"):
             _refresh_later(obj.Document)
 
     def onChanged(self, vobj, prop):

@@ -1,0 +1,108 @@
+"""From a MedialAxisResult to what a MedialAxis object keeps (mesh, colours, counts, PLY file), and
+back. Split in two so that the slow half can run in a worker thread:
+
+    stored = prepare_result(result)   # any thread: builds the Mesh, the colours, the PLY file
+    store_result(obj, stored)         # the thread that owns the document: assigns properties
+
+No proxy class here, so that both document objects can import this module without importing
+each other.
+"""
+
+import os
+import shutil
+import tempfile
+
+import FreeCAD as App
+import Mesh
+
+import cadmedial
+from cadmedial.colormap import colors_of
+
+from .registry import let_gui_breathe
+
+
+class StoredResult:
+    """What store_result() assigns, built from one MedialAxisResult. Owns a temporary folder
+    holding the PLY file until store_result() (or discard()) removes it."""
+
+    def __init__(self, result):
+        self.result = result
+        self.mesh = Mesh.Mesh()
+        # False: no manifold check. The medial surface is non-manifold where sheets meet, and the
+        # check (also done by Mesh.Mesh((points, facets))) would delete every facet at a junction.
+        points = [App.Vector(*p) for p in result.vertices.tolist()]
+        self.mesh.addFacets((points, [tuple(t) for t in result.triangles().tolist()]), False)
+        if result.num_vertices:
+            self.low, self.high = float(result.radius.min()), float(result.radius.max())
+        else:
+            self.low = self.high = 0.0
+        self.colors = [tuple(c) for c in colors_of(result.radius, self.low, self.high).tolist()]
+        self.folder = tempfile.mkdtemp(prefix="cadmedial-")
+        self.ply = os.path.join(self.folder, "medial_axis.ply")
+        result.save(self.ply)
+
+    def discard(self):
+        shutil.rmtree(self.folder, ignore_errors=True)
+
+
+def prepare_result(result):
+    """The StoredResult of a MedialAxisResult (slow: run it off the GUI thread)."""
+    return StoredResult(result)
+
+
+def store_result(obj, stored):
+    """Puts a StoredResult (or a MedialAxisResult, prepared here) into obj's Mesh, colours,
+    counts and ResultFile."""
+    if not isinstance(stored, StoredResult):
+        stored = prepare_result(stored)
+    result = stored.result
+    try:
+        # Each of the mesh and the colours takes the GUI about 3 s per million vertices to
+        # take in (FreeCAD's view provider, in the GUI thread): let it draw in between.
+        obj.Mesh = stored.mesh
+        let_gui_breathe()
+        obj.RadiusMin, obj.RadiusMax = stored.low, stored.high
+        obj.RadiusColors = stored.colors
+        let_gui_breathe()
+        stats = result.stats
+        obj.SampleCount = int(stats.get("samples", 0))
+        solids = stats.get("solids", [])
+        obj.SpacingUsed = min((float(s["spacing"]) for s in solids if "spacing" in s),
+                              default=float(stats.get("spacing", 0.0)))
+        obj.Refinements = max((int(s.get("refinements", 0)) for s in solids), default=0)
+        obj.VertexCount = result.num_vertices
+        obj.FaceCount = result.num_faces
+        obj.EdgeCount = result.num_edges
+        obj.Timings = ["%s: %.3f s" % (stage, seconds)
+                       for stage, seconds in stats.get("timings", {}).items()]
+        store_thinnest_wall(obj, stats)
+        obj.ResultFile = stored.ply  # FreeCAD copies it into the document's own folder
+    finally:
+        stored.discard()
+
+
+def store_thinnest_wall(obj, stats):
+    """ThinnestWall / ThinnestWallAt from the engine's stats (the smallest wall thickness it
+    measured while sampling, and where); 0 and the origin when it reported none."""
+    walls = [(float(s["thinnest_wall"]), s.get("thinnest_wall_at"))
+             for s in stats.get("solids", []) if s.get("thinnest_wall")]
+    if "ThinnestWall" not in obj.PropertiesList:
+        return
+    if not walls:
+        obj.ThinnestWall = 0.0
+        obj.ThinnestWallAt = App.Vector()
+        return
+    thickness, where = min(walls, key=lambda wall: wall[0])
+    obj.ThinnestWall = thickness
+    obj.ThinnestWallAt = App.Vector(*where) if where is not None else App.Vector()
+
+
+def medial_result(obj):
+    """The MedialAxisResult of a MedialAxis object: in memory after a compute, else read from
+    its ResultFile (after reopening a document). Raises cadmedial.InvalidInput when there is none."""
+    proxy = obj.Proxy
+    if proxy.result is None:
+        if not obj.ResultFile or not os.path.isfile(obj.ResultFile):
+            raise cadmedial.InvalidInput("%s has no result yet: recompute it" % obj.Label)
+        proxy.result = cadmedial.load(obj.ResultFile)
+    return proxy.result
