@@ -150,6 +150,7 @@ def _run(parts, out_dir, options, client, scheduler, jobs, report):
         report.say("%d parts on %d workers (%s)%s" % (
             len(parts), len(c.scheduler_info().get("workers", {})), c.scheduler.address,
             "; dashboard " + link if link else ""))
+        report.start = time.monotonic()  # the rate is of parts, not of the cluster's start-up
         futures = {}
         for rank, i in enumerate(order):
             f = c.submit(run_part, parts[i], out_dir, options, pure=False, priority=len(parts) - rank,

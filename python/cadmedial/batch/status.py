@@ -9,10 +9,11 @@ STATUSES = ("ok", "refused", "error", "out_of_memory", "timeout", "crashed", "lo
 
 # What running out of an address-space limit looks like from inside the engine: bad_alloc (main.cpp
 # says "out of memory"), or a thread that cannot get its stack (std::system_error EAGAIN,
-# "Resource temporarily unavailable"; seen on NIST FTC 11 under a 250 MB limit), or Python's
-# MemoryError in the FCStd reader.
-_MEMORY_MESSAGES = re.compile(r"out of memory|bad_alloc|Resource temporarily unavailable|Cannot allocate memory|"
-                              r"MemoryError|std::length_error", re.IGNORECASE)
+# "Resource temporarily unavailable"; seen on NIST FTC 11 under a 250 MB limit), or OpenCASCADE's
+# own allocator ("Standard_OutOfMemory: Standard_MMgrRaw::Allocate(): malloc failed", the same part
+# under 100 MB), or Python's MemoryError in the FCStd reader.
+_MEMORY_MESSAGES = re.compile(r"out of memory|OutOfMemory|bad_alloc|malloc failed|Resource temporarily unavailable|"
+                              r"Cannot allocate memory|MemoryError", re.IGNORECASE)
 
 
 def _message(stderr):
