@@ -8,6 +8,9 @@ import importlib.util
 import json
 import os
 import shutil
+import subprocess
+import sys
+import time
 
 import pytest
 
@@ -225,3 +228,29 @@ def test_a_scheduler_address_gives_the_same_summary(parts, tmp_path, cli):
     pick = lambda res: [{k: r.get(k) for k in COMPARED} for r in res.records]
     assert pick(remote) == pick(local)
     assert rows(tmp_path / "remote").keys() == rows(tmp_path / "local").keys()
+
+
+def test_a_killed_worker_takes_its_part_with_it(tmp_path):
+    # A stand-in for a Dask worker: a Python process running one part (a program that would run
+    # for 5 minutes) under run_limited, killed with SIGKILL as a lost node would be.
+    pid_file = tmp_path / "part.pid"
+    worker = subprocess.Popen([sys.executable, "-c", """
+import sys
+from cadmedial.batch.limits import run_limited
+run_limited(["sh", "-c", "echo $$ > %s; exec sleep 300"], timeout=600)
+""" % pid_file])
+    for _ in range(200):
+        if pid_file.exists() and pid_file.read_text().strip():
+            break
+        time.sleep(0.05)
+    part = int(pid_file.read_text())
+    worker.kill()
+    worker.wait()
+    for _ in range(100):  # the kernel delivers the parent-death signal at once; allow for load
+        try:
+            os.kill(part, 0)
+        except ProcessLookupError:
+            break
+        time.sleep(0.05)
+    with pytest.raises(ProcessLookupError):
+        os.kill(part, 0)

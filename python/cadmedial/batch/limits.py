@@ -1,6 +1,8 @@
 """Runs one command in its own process under a wall-time and an address-space limit, and says how
 it ended: the exit status or signal, whether the timeout killed it, its peak memory."""
 
+import ctypes
+import ctypes.util
 import os
 import resource
 import signal
@@ -22,13 +24,29 @@ class Outcome(NamedTuple):
 _STDERR_TAIL = 4096
 
 
-def _limit_memory(memory_bytes):
+try:
+    _libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6", use_errno=True)
+except OSError:  # not glibc: no parent-death signal, the rest works
+    _libc = None
+_PR_SET_PDEATHSIG = 1
+
+
+def _child_setup(memory_bytes):
     # Runs in the child between fork and exec. RLIMIT_AS bounds what malloc (and so new) can get:
     # past it the engine sees bad_alloc and says "out of memory" instead of the whole machine
     # swapping or the kernel's OOM killer picking a victim among other people's processes.
+    parent = os.getpid()
+
     def apply():
         if memory_bytes:
             resource.setrlimit(resource.RLIMIT_AS, (memory_bytes, memory_bytes))
+        # A worker killed mid-part (a node lost, `kill -9`) takes its part with it instead of
+        # leaving it running unlimited in time; Dask runs the part again elsewhere. The signal is
+        # tied to the thread that forks, which is the task's thread and outlives the child.
+        if _libc is not None:
+            _libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
+            if os.getppid() != parent:  # the worker died before prctl took effect
+                os._exit(137)
     return apply
 
 
@@ -47,7 +65,7 @@ def run_limited(argv: Sequence[str], timeout: Optional[float] = None, memory_byt
         with open(stderr_path, "wb") as err:
             proc = subprocess.Popen(list(argv), stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
                                     stderr=err, cwd=cwd, env=env, start_new_session=True,
-                                    preexec_fn=_limit_memory(memory_bytes))
+                                    preexec_fn=_child_setup(memory_bytes))
         status = {}
 
         # os.wait4 gives this child's own rusage (its peak RSS); Popen.wait would not. It blocks, so
