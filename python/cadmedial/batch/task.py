@@ -16,6 +16,7 @@ from typing import NamedTuple, Optional, Tuple
 from . import outputs
 from .analyses import Analysis, load as load_analysis
 from .limits import run_limited
+from .programs import find_cli, is_program
 from .status import classify, summary_columns
 
 
@@ -68,6 +69,8 @@ def run_part(part, out_dir, options: TaskOptions):
     try:
         source, replace = part.path, {}
         status, message = "ok", ""
+        # The client's path of the program, unless this worker (another machine) has it elsewhere.
+        cli = options.cli if is_program(options.cli) else find_cli()
         if part.path.lower().endswith(".fcstd"):
             source = os.path.join(work, "document.brep")
             replace[source] = part.path
@@ -80,7 +83,7 @@ def run_part(part, out_dir, options: TaskOptions):
         mesh = os.path.join(work, "mesh." + options.fmt)
         stats_file = os.path.join(work, "stats.json")
         if status == "ok":
-            argv = [options.cli, "compute", source, "-o", mesh, "--stats", stats_file, "--quiet"]
+            argv = [cli, "compute", source, "-o", mesh, "--stats", stats_file, "--quiet"]
             argv += list(options.compute_args)
             status, message, outcome = _step(argv, work, "compute", deadline, options, replace)
             if outcome:
@@ -94,7 +97,7 @@ def run_part(part, out_dir, options: TaskOptions):
                      stats_file: outputs.stats_path(out_dir, part.name)}
             for a in options.analyses:
                 module = load_analysis(a.name)
-                argv, files = module.batch_step(source, work, options.cli, a.options)
+                argv, files = module.batch_step(source, work, cli, a.options)
                 step_status, step_message, outcome = _step(argv, work, a.name, deadline, options, replace)
                 if outcome:
                     peak = max(peak, outcome.peak_rss_mb)
