@@ -33,11 +33,12 @@ _find_core()
 from ._core import Cancelled, Error, GeometryError, InvalidInput  # noqa: E402
 from .api import SamplingPlan, compute, load, plan_sampling, read_shape  # noqa: E402
 from .result import FaceKind, Faces, MedialAxisResult  # noqa: E402
+from . import batch  # noqa: E402  (callable: cadmedial.batch(inputs, out_dir, ...); Dask loads on use)
 
 __version__ = "0.1.0"
 
 __all__ = [
-    "compute", "plan_sampling", "load", "read_shape",
+    "compute", "plan_sampling", "load", "read_shape", "batch",
     "MedialAxisResult", "Faces", "FaceKind", "SamplingPlan",
     "Error", "InvalidInput", "GeometryError", "Cancelled",
 ]

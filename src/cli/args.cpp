@@ -16,6 +16,8 @@ std::string usage() {
       "  cadmedial compute INPUT -o OUTPUT [--spacing S | --samples N] [--refine] [--theta DEG]\n"
       "                    [--rho R] [--stats FILE.json] [--quiet]\n"
       "  cadmedial info INPUT [--spacing S | --samples N]\n"
+      "  cadmedial batch INPUTS... -o OUTDIR [--jobs N] [--scheduler ADDRESS] [--timeout S]\n"
+      "                  [--memory GB] [--force] [compute options]   (see cadmedial batch --help)\n"
       "  cadmedial --help | --version\n"
       "\n"
       "Computes the inner medial axis of the solids of a CAD file (CAD_MEDIAL, Dey & Zhao).\n"
@@ -148,7 +150,7 @@ Args parse_args(const std::vector<std::string>& argv) {
   const std::string command = positional[0];
   if (command == "compute") args.command = Command::Compute;
   else if (command == "info") args.command = Command::Info;
-  else throw InvalidInput("unknown command '" + command + "' (expected compute or info)");
+  else throw InvalidInput("unknown command '" + command + "' (expected compute, info or batch)");
 
   if (positional.size() < 2) throw InvalidInput(command + ": missing INPUT file");
   if (positional.size() > 2) throw InvalidInput(command + ": unexpected argument '" + positional[2] + "'");

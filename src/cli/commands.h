@@ -2,6 +2,9 @@
 // (InvalidInput, GeometryError, ...) on failure; main() turns exceptions into messages and statuses.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "args.h"
 
 namespace cadmedial::cli {
@@ -11,5 +14,9 @@ int run_compute(const Args& args);
 
 /// `cadmedial info`: solids, their topology, volume, bounding box, and the sampling plan.
 int run_info(const Args& args);
+
+/// `cadmedial batch ARGS...`: replaces this process with `python3 -m cadmedial.batch ARGS...`
+/// (batch_command.cpp says where the package is found). Returns only by throwing.
+int run_batch(const std::vector<std::string>& args);
 
 }  // namespace cadmedial::cli

@@ -1,0 +1,87 @@
+// `cadmedial batch`: handed over to the Python package (cadmedial.batch, on Dask) by exec, so that
+// its exit status, signals and terminal are the user's own. The package is looked for where an
+// install puts it, then in the source tree this program was built from.
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "core/errors.h"
+
+#ifndef CADMEDIAL_PYTHON
+#define CADMEDIAL_PYTHON "/usr/bin/python3"
+#endif
+#ifndef CADMEDIAL_SOURCE_PYTHON_DIR
+#define CADMEDIAL_SOURCE_PYTHON_DIR ""
+#endif
+
+namespace cadmedial::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool holds_batch_package(const fs::path& dir) {
+  std::error_code ec;
+  return fs::is_regular_file(dir / "cadmedial" / "batch" / "__main__.py", ec);
+}
+
+// The folder of a compiled cadmedial._core in `dir`, if any (a build tree keeps it apart from
+// the Python sources, which cadmedial/__init__.py finds through CADMEDIAL_CORE_DIR).
+bool holds_core(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return false;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.path().filename().string().rfind("_core", 0) == 0 && entry.path().extension() == ".so") return true;
+  return false;
+}
+
+}  // namespace
+
+int run_batch(const std::vector<std::string>& args) {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw InvalidInput(std::string("batch: cannot tell where this program is: ") + ec.message());
+  const fs::path bin = exe.parent_path();
+
+  // `cmake --install` puts the package in <prefix>/lib/cadmedial/python (CMakeLists.txt); a build
+  // tree uses the sources it was configured from.
+  std::vector<fs::path> candidates = {bin.parent_path() / "lib" / "cadmedial" / "python"};
+  if (*CADMEDIAL_SOURCE_PYTHON_DIR) candidates.emplace_back(CADMEDIAL_SOURCE_PYTHON_DIR);
+  fs::path package;
+  for (const fs::path& dir : candidates)
+    if (holds_batch_package(dir)) {
+      package = dir;
+      break;
+    }
+  if (package.empty()) {
+    std::string looked;
+    for (const fs::path& dir : candidates) looked += (looked.empty() ? "" : ", ") + dir.string();
+    throw InvalidInput("batch: cannot find the Python package cadmedial (looked in " + looked + ")");
+  }
+
+  const char* old_path = std::getenv("PYTHONPATH");
+  const std::string python_path = package.string() + (old_path && *old_path ? ":" + std::string(old_path) : "");
+  setenv("PYTHONPATH", python_path.c_str(), 1);
+  if (!std::getenv("CADMEDIAL_CORE_DIR") && holds_core(bin / "python" / "cadmedial"))
+    setenv("CADMEDIAL_CORE_DIR", (bin / "python" / "cadmedial").c_str(), 1);
+  // Each part is computed by this same program.
+  setenv("CADMEDIAL_CLI", exe.c_str(), 1);
+
+  std::vector<std::string> words = {CADMEDIAL_PYTHON, "-m", "cadmedial.batch"};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  std::fflush(nullptr);
+  execv(CADMEDIAL_PYTHON, argv.data());
+  throw InvalidInput(std::string("batch: cannot run ") + CADMEDIAL_PYTHON + ": " + std::strerror(errno));
+}
+
+}  // namespace cadmedial::cli
