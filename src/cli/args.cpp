@@ -16,6 +16,8 @@ std::string usage() {
       "  cadmedial compute INPUT -o OUTPUT [--spacing S | --samples N] [--refine] [--theta DEG]\n"
       "                    [--rho R] [--stats FILE.json] [--quiet]\n"
       "  cadmedial info INPUT [--spacing S | --samples N]\n"
+      "  cadmedial thickness INPUT --min T [--max T] [--corners zero|exclude] [-o F.ply|F.csv]\n"
+      "                    [--report F.html]   (wall thickness; exit 3 when out of limits; --help)\n"
       "  cadmedial --help | --version\n"
       "\n"
       "Computes the inner medial axis of the solids of a CAD file (CAD_MEDIAL, Dey & Zhao).\n"

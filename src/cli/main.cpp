@@ -20,6 +20,7 @@
 #include "commands.h"
 #include "core/errors.h"
 #include "core/process_memory.h"
+#include "python_command.h"
 
 namespace {
 
@@ -58,6 +59,7 @@ void quiet_opencascade() {
 
 int run(int argc, char** argv) {
   using namespace cadmedial::cli;
+  if (argc > 1 && std::string(argv[1]) == "thickness") return run_python_module("cadmedial.thickness", argc, argv);
   const Args args = parse_args(std::vector<std::string>(argv + 1, argv + argc));
   switch (args.command) {
     case Command::Help:
