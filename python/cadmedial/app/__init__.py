@@ -10,6 +10,7 @@ The GUI attaches its view providers through ``view_provider_factories`` (filled 
 from .medial_axis import MedialAxis, make_medial_axis, medial_result
 from .medial_shape import MedialShape, make_medial_shape
 from .registry import is_medial_axis, view_provider_factories
+from .thickness_object import WallThickness, is_wall_thickness, make_wall_thickness
 
 
 def export_medial_axis(obj, path):
@@ -18,4 +19,5 @@ def export_medial_axis(obj, path):
 
 
 __all__ = ["MedialAxis", "MedialShape", "make_medial_axis", "make_medial_shape", "medial_result",
-           "export_medial_axis", "is_medial_axis", "view_provider_factories"]
+           "export_medial_axis", "is_medial_axis", "view_provider_factories",
+           "WallThickness", "make_wall_thickness", "is_wall_thickness"]
