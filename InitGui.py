@@ -20,6 +20,7 @@ class MedialAxisWorkbench(FreeCADGui.Workbench):
     def Initialize(self):
         import cadmedial.gui  # noqa: F401  (registers the commands)
         commands = ["MedialAxis_Create", "MedialAxis_Export", "MedialAxis_MakeShape"]
+        commands.append("MedialAxis_WallThickness")
         self.appendToolbar("Medial Axis", commands)
         self.appendMenu("&Medial Axis", commands)
 

@@ -13,5 +13,7 @@ from .view_provider import ViewProviderMedialAxis, ViewProviderMedialShape
 view_provider_factories["MedialAxis"] = ViewProviderMedialAxis
 view_provider_factories["MedialShape"] = ViewProviderMedialShape
 commands.register()
+from . import thickness_command  # noqa: E402
+thickness_command.register()
 
 __all__ = ["ViewProviderMedialAxis", "ViewProviderMedialShape", "commands"]

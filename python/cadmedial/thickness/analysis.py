@@ -146,13 +146,16 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
     gap = np.empty(len(mesh.points))
     ball = np.empty(len(mesh.points), dtype=np.int64)
     vsolid = _vertex_solid(medial)
-    per_solid = len(medial.stats.get("solids", [])) == len(solids) and len(solids) > 1
+    # Each solid's points against its own balls, when the engine's solids are FreeCAD's (same
+    # count, each with balls); otherwise all balls (touching solids may then lend a ball).
+    per_solid = (len(medial.stats.get("solids", [])) == len(solids) and len(solids) > 1
+                 and np.all(np.bincount(vsolid, minlength=len(solids))[:len(solids)] > 0))
     groups = range(len(solids)) if per_solid else [None]
     for s in groups:
         pick = np.ones(len(mesh.points), bool) if s is None else mesh.point_solid == s
         balls = np.arange(medial.num_vertices) if s is None else np.nonzero(vsolid == s)[0]
         if len(balls) == 0:
-            raise _core.GeometryError("solid %d has no medial axis vertices" % s)
+            raise _core.GeometryError("the medial axis has no vertices")
         v, g, b = sphere_thickness(mesh.points[pick], medial.vertices[balls], medial.radius[balls])
         values[pick], gap[pick], ball[pick] = v, g, balls[b]
     t3 = time.perf_counter()
