@@ -37,8 +37,16 @@ from . import batch  # noqa: E402  (callable: cadmedial.batch(inputs, out_dir, .
 
 __version__ = "0.1.0"
 
+
+def __getattr__(name):
+    # cadmedial.thickness (a callable subpackage) pulls in scipy and FreeCAD's Part: only on use.
+    if name == "thickness":
+        import importlib
+        return importlib.import_module(__name__ + ".thickness")
+    raise AttributeError("module 'cadmedial' has no attribute %r" % name)
+
 __all__ = [
     "compute", "plan_sampling", "load", "read_shape", "batch",
     "MedialAxisResult", "Faces", "FaceKind", "SamplingPlan",
-    "Error", "InvalidInput", "GeometryError", "Cancelled",
+    "Error", "InvalidInput", "GeometryError", "Cancelled", "thickness",
 ]

@@ -18,6 +18,8 @@ std::string usage() {
       "  cadmedial info INPUT [--spacing S | --samples N]\n"
       "  cadmedial batch INPUTS... -o OUTDIR [--jobs N] [--scheduler ADDRESS] [--timeout S]\n"
       "                  [--memory GB] [--force] [compute options]   (see cadmedial batch --help)\n"
+      "  cadmedial thickness INPUT --min T [--max T] [--corners zero|exclude] [-o F.ply|F.csv]\n"
+      "                    [--report F.html]   (wall thickness; exit 3 when out of limits; --help)\n"
       "  cadmedial --help | --version\n"
       "\n"
       "Computes the inner medial axis of the solids of a CAD file (CAD_MEDIAL, Dey & Zhao).\n"

@@ -15,8 +15,8 @@ int run_compute(const Args& args);
 /// `cadmedial info`: solids, their topology, volume, bounding box, and the sampling plan.
 int run_info(const Args& args);
 
-/// `cadmedial batch ARGS...`: replaces this process with `python3 -m cadmedial.batch ARGS...`
-/// (batch_command.cpp says where the package is found). Returns only by throwing.
-int run_batch(const std::vector<std::string>& args);
+/// `cadmedial batch|thickness ARGS...`: replaces this process with `python3 -m MODULE ARGS...`
+/// (python_command.cpp says where the package is found). Returns only by throwing.
+int run_python_module(const std::string& module, const std::vector<std::string>& args);
 
 }  // namespace cadmedial::cli

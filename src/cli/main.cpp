@@ -58,8 +58,12 @@ void quiet_opencascade() {
 
 int run(int argc, char** argv) {
   using namespace cadmedial::cli;
-  // The batch runner is Python (cadmedial.batch, on Dask) and parses its own arguments.
-  if (argc > 1 && std::string(argv[1]) == "batch") return run_batch(std::vector<std::string>(argv + 2, argv + argc));
+  // The batch runner (on Dask) and the wall-thickness analysis are Python and parse their own
+  // arguments.
+  for (const char* python_command : {"batch", "thickness"})
+    if (argc > 1 && std::string(argv[1]) == python_command)
+      return run_python_module(std::string("cadmedial.") + python_command,
+                               std::vector<std::string>(argv + 2, argv + argc));
   const Args args = parse_args(std::vector<std::string>(argv + 1, argv + argc));
   switch (args.command) {
     case Command::Help:

@@ -11,6 +11,7 @@ from .medial_axis import MedialAxis, make_medial_axis
 from .medial_shape import MedialShape, make_medial_shape
 from .results import StoredResult, medial_result, prepare_result, store_result
 from .registry import is_medial_axis, view_provider_factories
+from .thickness_object import WallThickness, is_wall_thickness, make_wall_thickness
 
 
 def export_medial_axis(obj, path):
@@ -20,4 +21,5 @@ def export_medial_axis(obj, path):
 
 __all__ = ["MedialAxis", "MedialShape", "make_medial_axis", "make_medial_shape", "medial_result",
            "export_medial_axis", "is_medial_axis", "view_provider_factories", "StoredResult",
-           "prepare_result", "store_result"]
+           "prepare_result", "store_result", "WallThickness", "make_wall_thickness",
+           "is_wall_thickness"]

@@ -17,5 +17,7 @@ registry.background_runner = run_with_progress
 registry.breathe = breathe
 commands.register()
 picking.install()
+from . import thickness_command  # noqa: E402
+thickness_command.register()
 
 __all__ = ["ViewProviderMedialAxis", "ViewProviderMedialShape", "commands"]

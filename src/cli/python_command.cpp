@@ -1,5 +1,6 @@
-// `cadmedial batch`: handed over to the Python package (cadmedial.batch, on Dask) by exec, so that
-// its exit status, signals and terminal are the user's own. The package is looked for where an
+// The sub-commands written in Python (`cadmedial batch`: cadmedial.batch on Dask; `cadmedial
+// thickness`: cadmedial.thickness) are handed over by exec, so that their exit status, signals
+// and terminal are the user's own. The package is looked for where an
 // install puts it, then in the source tree this program was built from.
 #include <unistd.h>
 
@@ -7,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -27,9 +29,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool holds_batch_package(const fs::path& dir) {
+// Whether `dir` holds the package `module` ("cadmedial.batch") with its __main__.
+bool holds_package(const fs::path& dir, const std::string& module) {
+  fs::path package = dir;
+  for (std::size_t begin = 0; begin <= module.size();) {
+    const std::size_t dot = std::min(module.find('.', begin), module.size());
+    package /= module.substr(begin, dot - begin);
+    begin = dot + 1;
+  }
   std::error_code ec;
-  return fs::is_regular_file(dir / "cadmedial" / "batch" / "__main__.py", ec);
+  return fs::is_regular_file(package / "__main__.py", ec);
 }
 
 // The folder of a compiled cadmedial._core in `dir`, if any (a build tree keeps it apart from
@@ -44,10 +53,10 @@ bool holds_core(const fs::path& dir) {
 
 }  // namespace
 
-int run_batch(const std::vector<std::string>& args) {
+int run_python_module(const std::string& module, const std::vector<std::string>& args) {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) throw InvalidInput(std::string("batch: cannot tell where this program is: ") + ec.message());
+  if (ec) throw InvalidInput((module + ": cannot tell where this program is: ") + ec.message());
   const fs::path bin = exe.parent_path();
 
   // `cmake --install` puts the package in <prefix>/lib/cadmedial/python (CMakeLists.txt); a build
@@ -56,14 +65,14 @@ int run_batch(const std::vector<std::string>& args) {
   if (*CADMEDIAL_SOURCE_PYTHON_DIR) candidates.emplace_back(CADMEDIAL_SOURCE_PYTHON_DIR);
   fs::path package;
   for (const fs::path& dir : candidates)
-    if (holds_batch_package(dir)) {
+    if (holds_package(dir, module)) {
       package = dir;
       break;
     }
   if (package.empty()) {
     std::string looked;
     for (const fs::path& dir : candidates) looked += (looked.empty() ? "" : ", ") + dir.string();
-    throw InvalidInput("batch: cannot find the Python package cadmedial (looked in " + looked + ")");
+    throw InvalidInput("cannot find the Python package " + module + " (looked in " + looked + ")");
   }
 
   const char* old_path = std::getenv("PYTHONPATH");
@@ -74,14 +83,14 @@ int run_batch(const std::vector<std::string>& args) {
   // Each part is computed by this same program.
   setenv("CADMEDIAL_CLI", exe.c_str(), 1);
 
-  std::vector<std::string> words = {CADMEDIAL_PYTHON, "-m", "cadmedial.batch"};
+  std::vector<std::string> words = {CADMEDIAL_PYTHON, "-m", module};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
   std::fflush(nullptr);
   execv(CADMEDIAL_PYTHON, argv.data());
-  throw InvalidInput(std::string("batch: cannot run ") + CADMEDIAL_PYTHON + ": " + std::strerror(errno));
+  throw InvalidInput(module + ": cannot run " + CADMEDIAL_PYTHON + ": " + std::strerror(errno));
 }
 
 }  // namespace cadmedial::cli

@@ -1,0 +1,45 @@
+"""The thickness at one point by both methods, with what to draw: the ball and the ray."""
+
+import numpy as np
+
+from .ray import outward_normal, ray_thickness_one
+from .shape_source import solids_of
+from .sphere import sphere_thickness
+
+
+def _vector(p):
+    import FreeCAD
+    return FreeCAD.Vector(float(p[0]), float(p[1]), float(p[2]))
+
+
+def probe(source, point, medial):
+    """Dict for the boundary point of ``source`` nearest ``point`` (3,): point, face (name),
+    normal (outward), sphere (thickness), ball_centre, ball_radius, ray (thickness along the
+    inward normal, nan if the ray finds no wall), ray_end. ``medial`` is the MedialAxisResult
+    (or a ThicknessResult's .medial) of the same shape."""
+    shape, solids = solids_of(source)
+    p = _vector(point)
+    best = None
+    for i, face in enumerate(shape.Faces):
+        d, pairs, _ = face.distToShape(_vertex(p))
+        if best is None or d < best[0]:
+            q = pairs[0][0]
+            best = (d, i, np.array([q.x, q.y, q.z]))
+    _, i, q = best
+    face = shape.Faces[i]
+    normal = outward_normal(face, q)
+    solid = next((s for s in solids if s.isInside(_vector(q - 1e-6 * normal * shape.BoundBox
+                                                          .DiagonalLength), 0.0, True)),
+                 solids[0])
+    value, _, ball = sphere_thickness(q[None, :], medial.vertices, medial.radius)
+    ray = ray_thickness_one(solid, q, -normal, 2.0 * shape.BoundBox.DiagonalLength)
+    return {"point": q.tolist(), "face": "Face%d" % (i + 1), "normal": normal.tolist(),
+            "sphere": float(value[0]),
+            "ball_centre": [float(x) for x in medial.vertices[ball[0]]],
+            "ball_radius": float(medial.radius[ball[0]]),
+            "ray": ray, "ray_end": (q - ray * normal).tolist() if np.isfinite(ray) else None}
+
+
+def _vertex(p):
+    import Part
+    return Part.Vertex(p)

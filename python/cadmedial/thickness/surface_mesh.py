@@ -1,0 +1,281 @@
+"""The surface points of a thickness analysis: a fine, conforming triangulation of the solids'
+faces, each triangle knowing its B-rep face.
+
+OpenCASCADE's BRepMesh (through Part's Face.tessellate) follows the curvature but leaves planar
+faces as a few long triangles; the values are per vertex, so those triangles are split until no
+side is longer than ``max_edge``. Splitting is decided per side (a side is split when it is long,
+whichever triangle looks at it), so the mesh stays conforming across triangles and across faces.
+"""
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
+
+
+@dataclass
+class SurfaceMesh:
+    """points (N, 3) float64; triangles (T, 3) int64, outward by the right-hand rule;
+    triangle_face (T,) int64 index into shape.Faces (name "Face%d" % (i + 1));
+    point_solid (N,) int64 index of the solid each point lies on (into the solids given);
+    face_names list of the names of shape.Faces."""
+    points: np.ndarray
+    triangles: np.ndarray
+    triangle_face: np.ndarray
+    point_solid: np.ndarray
+    face_names: list = field(default_factory=list)
+
+    def triangle_areas(self):
+        """(T,) area of each triangle."""
+        a, b, c = (self.points[self.triangles[:, i]] for i in range(3))
+        return 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
+
+    def point_areas(self):
+        """(N,) the surface area each point stands for: a third of each triangle around it
+        (sums to the mesh's area)."""
+        area = np.zeros(len(self.points))
+        np.add.at(area, self.triangles.ravel(), np.repeat(self.triangle_areas() / 3.0, 3))
+        return area
+
+    def triangle_normals(self):
+        """(T, 3) outward unit normals."""
+        a, b, c = (self.points[self.triangles[:, i]] for i in range(3))
+        n = np.cross(b - a, c - a)
+        return n / np.maximum(np.linalg.norm(n, axis=1), 1e-300)[:, None]
+
+    def point_faces(self):
+        """List of N sorted lists: the faces each point lies on (several on a B-rep edge)."""
+        pairs = np.unique(np.column_stack([self.triangles.ravel(),
+                                           np.repeat(self.triangle_face, 3)]), axis=0)
+        out = [[] for _ in range(len(self.points))]
+        for p, f in pairs.tolist():
+            out[p].append(f)
+        return out
+
+
+def _sides(triangles):
+    """(unique sides (S, 2) sorted pairs, (T, 3) side index of each triangle's sides a-b, b-c,
+    c-a)."""
+    raw = np.stack([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]], axis=1)
+    raw = np.sort(raw.reshape(-1, 2), axis=1)
+    # One int64 key per side: np.unique on rows (axis=0) is several times slower.
+    n = np.int64(triangles.max() + 1)
+    keys, inverse = np.unique(raw[:, 0] * n + raw[:, 1], return_inverse=True)
+    sides = np.column_stack([keys // n, keys % n])
+    return sides, inverse.reshape(-1, 3)
+
+
+def _split_long_sides(points, triangles, tri_face, max_edge, project):
+    """One round of splitting every side longer than max_edge at its midpoint (1, 2 or 3 sides
+    of a triangle: 2, 3 or 4 triangles, orientation kept). ``project(points, face)`` moves new
+    points that lie inside a curved face onto it. Returns (points, triangles, tri_face, done)."""
+    sides, tri_side = _sides(triangles)
+    length = np.linalg.norm(points[sides[:, 0]] - points[sides[:, 1]], axis=1)
+    # Only the longest side of a triangle is split (Rivara's longest-edge bisection): splitting
+    # every long side of BRepMesh's long strips on cylinders cuts them into ever thinner slivers
+    # (a tube took a million points for 30,000 samples).
+    longest = np.zeros(len(sides), bool)
+    longest[tri_side[np.arange(len(triangles)), np.argmax(length[tri_side], axis=1)]] = True
+    split = (length > max_edge) & longest
+    if not split.any():
+        return points, triangles, tri_face, True
+    mid_index = np.full(len(sides), -1, dtype=np.int64)
+    mid_index[split] = len(points) + np.arange(split.sum())
+    mids = 0.5 * (points[sides[split, 0]] + points[sides[split, 1]])
+    # A side inside one face (both its triangles on that face) gets its midpoint on the surface;
+    # a side on a B-rep edge keeps the chord's midpoint, so both faces make the same point.
+    side_faces = np.full((len(sides), 2), -1, dtype=np.int64)
+    flat_side, flat_tri = tri_side.ravel(), np.repeat(np.arange(len(triangles)), 3)
+    side_faces[flat_side, 0] = tri_face[flat_tri]
+    side_faces[flat_side[::-1], 1] = tri_face[flat_tri[::-1]]
+    inside = (side_faces[:, 0] == side_faces[:, 1])[split]
+    mids[inside] = project(mids[inside], side_faces[split, 0][inside])
+    points = np.vstack([points, mids])
+
+    s = split[tri_side]                    # (T, 3) which sides a-b, b-c, c-a are split
+    m = mid_index[tri_side]                # their midpoints
+    count = s.sum(axis=1)
+    out_tris, out_face = [triangles[count == 0]], [tri_face[count == 0]]
+    rows = np.arange(len(triangles))
+
+    def rolled(sel, start):
+        i = rows[sel]
+        k = [(start + j) % 3 for j in range(3)]
+        v = [triangles[i, kj] for kj in k]
+        mm = [m[i, kj] for kj in k]
+        return v, mm, tri_face[i]
+
+    one = count == 1
+    if one.any():
+        start = np.argmax(s[one], axis=1)  # the split side becomes a-b
+        (a, b, c), (mab, _, _), f = rolled(one, start)
+        out_tris += [np.column_stack([a, mab, c]), np.column_stack([mab, b, c])]
+        out_face += [f, f]
+    two = count == 2
+    if two.any():
+        start = (np.argmin(s[two], axis=1) + 1) % 3  # the kept side becomes c-a
+        (a, b, c), (mab, mbc, _), f = rolled(two, start)
+        # The quad a, mab, mbc, c is cut from the midpoint of the longer split side (as
+        # longest-edge bisection would), so the cut is the shorter diagonal's neighbour.
+        rows_two = rows[two]
+        k = [(start + j) % 3 for j in range(3)]
+        ab_longer = (length[tri_side[rows_two, k[0]]] >= length[tri_side[rows_two, k[1]]])
+        t1 = np.where(ab_longer[:, None], np.column_stack([mab, b, mbc]), np.column_stack([mab, b, mbc]))
+        t2 = np.where(ab_longer[:, None], np.column_stack([mab, mbc, c]), np.column_stack([a, mab, mbc]))
+        t3 = np.where(ab_longer[:, None], np.column_stack([a, mab, c]), np.column_stack([a, mbc, c]))
+        out_tris += [t1, t2, t3]
+        out_face += [f, f, f]
+    three = count == 3
+    if three.any():
+        (a, b, c), (mab, mbc, mca), f = rolled(three, np.zeros(three.sum(), dtype=np.int64))
+        out_tris += [np.column_stack([a, mab, mca]), np.column_stack([mab, b, mbc]),
+                     np.column_stack([mca, mbc, c]), np.column_stack([mab, mbc, mca])]
+        out_face += [f] * 4
+    return points, np.vstack(out_tris), np.concatenate(out_face), False
+
+
+def _flip_round(points, triangles, tri_face):
+    """One round of Delaunay edge flips inside faces: a side shared by two triangles of one face
+    whose opposite angles sum to more than pi is replaced by the other diagonal, each triangle in
+    at most one flip per round. Bisection alone turns BRepMesh's long strips on cylinders into
+    slivers; flips between the rounds keep the triangles near equilateral. Returns
+    (triangles, flipped count)."""
+    sides, tri_side = _sides(triangles)
+    flat_side = tri_side.ravel()
+    order = np.argsort(flat_side, kind="stable")
+    count = np.bincount(flat_side, minlength=len(sides))
+    start = np.concatenate([[0], np.cumsum(count)[:-1]])
+    two = np.nonzero(count == 2)[0]
+    k1, k2 = order[start[two]], order[start[two] + 1]     # flat (triangle * 3 + local side)
+    t1, j1, t2, j2 = k1 // 3, k1 % 3, k2 // 3, k2 % 3
+    same = tri_face[t1] == tri_face[t2]
+    t1, j1, t2, j2 = t1[same], j1[same], t2[same], j2[same]
+    a, b = triangles[t1, j1], triangles[t1, (j1 + 1) % 3]
+    c, d = triangles[t1, (j1 + 2) % 3], triangles[t2, (j2 + 2) % 3]
+
+    def angle(at, p, q):
+        u, v = points[p] - points[at], points[q] - points[at]
+        cos = np.einsum("ij,ij->i", u, v) / np.maximum(
+            np.linalg.norm(u, axis=1) * np.linalg.norm(v, axis=1), 1e-300)
+        return np.arccos(np.clip(cos, -1.0, 1.0))
+    excess = angle(c, a, b) + angle(d, a, b) - np.pi
+    cand = np.nonzero((excess > 1e-9) & (c != d))[0]
+    if len(cand) == 0:
+        return triangles, 0
+    n = np.int64(len(points))
+    existing = sides[:, 0] * n + sides[:, 1]
+    new_key = np.minimum(c[cand], d[cand]) * n + np.maximum(c[cand], d[cand])
+    cand = cand[~np.isin(new_key, existing)]
+    prio = excess[cand] + 1e-12 * np.arange(len(cand)) / max(len(cand), 1)
+    best = np.full(len(triangles), -np.inf)
+    np.maximum.at(best, t1[cand], prio)
+    np.maximum.at(best, t2[cand], prio)
+    win = cand[(best[t1[cand]] == prio) & (best[t2[cand]] == prio)]
+    if len(win) == 0:
+        return triangles, 0
+    triangles = triangles.copy()
+    triangles[t1[win]] = np.column_stack([c[win], a[win], d[win]])
+    triangles[t2[win]] = np.column_stack([d[win], b[win], c[win]])
+    return triangles, len(win)
+
+
+def _flip_until_delaunay(points, triangles, tri_face, rounds=12):
+    for _ in range(rounds):
+        triangles, flipped = _flip_round(points, triangles, tri_face)
+        if not flipped:
+            break
+    return triangles
+
+
+def _merge_coincident(points, triangles, tol):
+    """Points closer than tol made one (faces tessellated one by one repeat their edges'
+    points). Returns (points, triangles)."""
+    pairs = cKDTree(points).query_pairs(tol, output_type="ndarray")
+    n = len(points)
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
+    _, label = connected_components(graph, directed=False)
+    first = np.full(label.max() + 1, -1, dtype=np.int64)
+    first[label[::-1]] = np.arange(n)[::-1]
+    keep = np.sort(first)
+    new_index = np.empty(label.max() + 1, dtype=np.int64)
+    new_index[label[keep]] = np.arange(len(keep))
+    return points[keep], new_index[label[triangles]]
+
+
+def surface_mesh(shape, solids, max_edge, deflection):
+    """SurfaceMesh of ``solids`` (faces of ``shape``): BRepMesh at ``deflection`` (linear), then
+    sides split until none is longer than ``max_edge``. Degenerate triangles are dropped."""
+    faces = list(shape.Faces)
+    index_of = {}
+    for i, face in enumerate(faces):
+        index_of.setdefault(face.hashCode(), i)
+    chunks, tri_chunks, face_chunks, solid_of_face = [], [], [], {}
+    offset = 0
+    for s, solid in enumerate(solids):
+        for face in solid.Faces:
+            i = index_of.get(face.hashCode())
+            if i is None:  # a solid made from a shell here: its faces are the shell's
+                i = len(faces)
+                faces.append(face)
+                index_of[face.hashCode()] = i
+            if i in solid_of_face:
+                continue
+            solid_of_face[i] = s
+            pts, tris = face.tessellate(deflection)
+            if not tris:
+                continue
+            chunks.append(np.array([tuple(p) for p in pts], dtype=np.float64))
+            tri_chunks.append(np.asarray(tris, dtype=np.int64) + offset)
+            face_chunks.append(np.full(len(tris), i, dtype=np.int64))
+            offset += len(pts)
+    points = np.vstack(chunks)
+    tri_face = np.concatenate(face_chunks)
+    diag = float(np.linalg.norm(points.max(axis=0) - points.min(axis=0)))
+    points, triangles = _merge_coincident(points, np.vstack(tri_chunks), 1e-9 * diag)
+
+    def project(p, face_index):
+        out = p.copy()
+        for f in np.unique(face_index):
+            surface = faces[f].Surface
+            kind = type(surface).__name__
+            sel = np.nonzero(face_index == f)[0]
+            if kind == "Plane":
+                continue
+            if kind in ("Cylinder", "Sphere"):  # closed forms, vectorised
+                c = np.array(tuple(surface.Center))
+                d = p[sel] - c
+                if kind == "Cylinder":
+                    axis = np.array(tuple(surface.Axis))
+                    along = (d @ axis)[:, None] * axis
+                    d = d - along
+                    c = c + along
+                out[sel] = c + surface.Radius * d / np.maximum(
+                    np.linalg.norm(d, axis=1), 1e-300)[:, None]
+                continue
+            for j in sel:
+                u, v = surface.parameter(_vector(p[j]))
+                q = surface.value(u, v)
+                out[j] = (q.x, q.y, q.z)
+        return out
+
+    done = False
+    triangles = _flip_until_delaunay(points, triangles, tri_face)
+    while not done:
+        points, triangles, tri_face, done = _split_long_sides(points, triangles, tri_face,
+                                                             max_edge, project)
+        triangles = _flip_until_delaunay(points, triangles, tri_face)
+    a, b, c = (points[triangles[:, i]] for i in range(3))
+    good = np.linalg.norm(np.cross(b - a, c - a), axis=1) > 1e-12 * diag * diag
+    triangles, tri_face = triangles[good], tri_face[good]
+    face_solid = np.array([solid_of_face.get(i, 0) for i in range(len(faces))], dtype=np.int64)
+    point_solid = np.zeros(len(points), dtype=np.int64)
+    point_solid[triangles.ravel()] = np.repeat(face_solid[tri_face], 3)
+    names = ["Face%d" % (i + 1) for i in range(len(faces))]
+    return SurfaceMesh(points, triangles, tri_face, point_solid, names)
+
+
+def _vector(p):
+    import FreeCAD
+    return FreeCAD.Vector(float(p[0]), float(p[1]), float(p[2]))
