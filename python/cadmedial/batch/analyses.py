@@ -10,6 +10,8 @@ An analysis lives in its own module, which the batch imports by name; that modul
         the part's summary columns from the command's exit status and files (a status the
         analysis does not accept raises, and the part is recorded as failed with that message)
 
+and may name the summary.csv columns it adds in ``BATCH_COLUMNS``.
+
 ``options`` is the analysis's own options ({"min": 0.8, "max": None} for thickness).
 """
 
@@ -25,8 +27,7 @@ class AnalysisSpec(NamedTuple):
     options: tuple     # the option names it takes
 
 
-# Wall thickness is issue 34's (cadmedial.thickness); until that module exists, --thickness is
-# refused with a message that says so.
+# An install without cadmedial.thickness refuses --thickness with a message that says so.
 KNOWN = {
     "thickness": AnalysisSpec("cadmedial.thickness", "the wall-thickness analysis (issue 34)", ("min", "max")),
 }
@@ -61,3 +62,8 @@ def check(analyses):
         unknown = set(a.options) - set(KNOWN[a.name].options)
         if unknown:
             raise InvalidInput("--%s takes no option %s" % (a.name, ", ".join(sorted(unknown))))
+
+
+def columns(analyses):
+    """The summary.csv columns the analyses add, in order."""
+    return tuple(c for a in analyses for c in getattr(load(a.name), "BATCH_COLUMNS", ()))

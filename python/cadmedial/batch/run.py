@@ -105,6 +105,7 @@ def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAU
     if thickness is not None:
         extra = (analyses.Analysis("thickness", dict(thickness)),)
     analyses.check(extra)
+    columns = analyses.columns(extra)
     options = TaskOptions(cli=find_cli(cli), fmt=format,
                           compute_args=compute_args(spacing, samples, theta, rho, refine, uniform, plain_medial),
                           timeout=_limit("timeout", timeout, 1.0), memory_bytes=_limit("memory", memory, 2**30),
@@ -129,9 +130,9 @@ def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAU
         report.say("%d of %d parts done before (outputs newer than their input): skipped; --force redoes them"
                    % (len(records), len(parts)))
     if todo:
-        records += _run(todo, out_dir, options, client, scheduler, jobs, report)
+        records += _run(todo, out_dir, options, client, scheduler, jobs, report, columns)
     records.sort(key=lambda r: r["part"])
-    summary.write(out_dir, records)
+    summary.write(out_dir, records, columns)
     seconds = time.monotonic() - start
     text = summary.text(records, seconds)
     if progress:
@@ -139,7 +140,7 @@ def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAU
     return BatchResult(records, summary.counts(records), seconds, text)
 
 
-def _run(parts, out_dir, options, client, scheduler, jobs, report):
+def _run(parts, out_dir, options, client, scheduler, jobs, report, columns):
     """Records of ``parts`` run on Dask, in the order they finish."""
     from distributed import as_completed
     # The biggest files first (priority): the longest parts should not be the last to start.
@@ -172,6 +173,6 @@ def _run(parts, out_dir, options, client, scheduler, jobs, report):
         except KeyboardInterrupt:
             c.cancel(list(futures))
             # What finished is on disk with its record: a rerun resumes from there.
-            summary.write(out_dir, records)
+            summary.write(out_dir, records, columns)
             raise
     return records

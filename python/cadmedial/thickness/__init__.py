@@ -10,9 +10,11 @@ for the surface mesh and the rays (see shape_source.py).
 """
 
 from .analysis import CORNER_POLICIES, ThicknessResult, check_settings, thickness
+from .batch_hook import BATCH_COLUMNS, batch_result, batch_step
 from .probe import probe
 
-__all__ = ["thickness", "ThicknessResult", "probe", "check_settings", "CORNER_POLICIES"]
+__all__ = ["thickness", "ThicknessResult", "probe", "check_settings", "CORNER_POLICIES",
+           "batch_step", "batch_result", "BATCH_COLUMNS"]
 
 
 import sys as _sys

@@ -11,7 +11,7 @@ import json
 import os
 import sys
 
-PASS, INTERNAL, BAD_INPUT, OUT_OF_LIMITS = 0, 1, 2, 3
+from cadmedial.thickness.exit_status import BAD_INPUT, INTERNAL, OUT_OF_LIMITS, PASS
 
 
 class _Parser(argparse.ArgumentParser):

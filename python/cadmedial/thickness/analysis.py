@@ -156,7 +156,8 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
         balls = np.arange(medial.num_vertices) if s is None else np.nonzero(vsolid == s)[0]
         if len(balls) == 0:
             raise _core.GeometryError("the medial axis has no vertices")
-        v, g, b = sphere_thickness(mesh.points[pick], medial.vertices[balls], medial.radius[balls])
+        v, g, b = sphere_thickness(mesh.points[pick], medial.vertices[balls], medial.radius[balls],
+                                   reach=h)
         values[pick], gap[pick], ball[pick] = v, g, balls[b]
     t3 = time.perf_counter()
     timings["sphere"] = t3 - t2
