@@ -183,12 +183,12 @@ def test_document_saved_before_refine_gets_it_off_on_reopening(doc, tmp_path):
 
 
 def test_refine_samples_thin_ribs_finer_until_the_axis_is_right(doc, capfd):
-    # Six ribs 0.6 thick and 15 tall on a block: at 3000 samples their sheets come apart even
-    # after the thin-wall refinement; the report view says so. With Refine the feature samples
-    # the part again, finer, and its axis has the part's topology.
+    # Six ribs 0.15 thick and 15 tall on a block: at 3000 samples their sheets come apart (the
+    # axis in 2 pieces) even after the thin-wall refinement; the report view says so. With Refine
+    # the feature samples the part again, finer, and its axis has the part's topology.
     shape = Part.makeBox(50, 50, 5)
     for k in range(6):
-        shape = shape.fuse(Part.makeBox(0.6, 50, 15, FreeCAD.Vector(4 + 8 * k, 0, 5)))
+        shape = shape.fuse(Part.makeBox(0.15, 50, 15, FreeCAD.Vector(4 + 8 * k, 0, 5)))
     ribs = doc.addObject("Part::Feature", "Ribs")
     ribs.Shape = shape.removeSplitter()
     doc.recompute()

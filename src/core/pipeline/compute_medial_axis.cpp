@@ -27,6 +27,7 @@
 #include "../medial/reconstruct_faces.h"
 #include "../sampling/sample_solid.h"
 #include "../sampling/spacing_field.h"
+#include "../sampling/edge_walls.h"
 #include "../sampling/thin_walls.h"
 #include "../two_cores.h"
 #include "compute_as_given.h"
@@ -141,6 +142,8 @@ constexpr double kMaxRefinement = 4.0;
 // budget is thrown away).
 constexpr double kDeepestRefinement = 256.0;
 constexpr double kSampleBudget = 3.0;
+// How far from its edges a mirrored thin wall is sampled finer, in spacings.
+constexpr double kJunctionReach = 2.0;
 constexpr double kGradation = 0.5;
 constexpr double kSharpWedgeDot = -0.95;  // normals of a wedge of 18 degrees
 
@@ -158,18 +161,29 @@ struct SolidSampling {
   double first_thinnest = std::numeric_limits<double>::infinity();
 };
 
-// Per sample of a uniform sampling, half the thickness of a wall thinner than the spacing allows
-// at a convex edge (edge_walls.h): the faces of thin walls are sampled in mirrored pairs
-// (mirror_thin_walls.h), which carry their sheets at any spacing; only the rims, where the sheet
-// forks to two edges a wall's thickness apart, need the finer samples. Walls up to two spacings
-// thick: a chip resistor's terminal caps, 1.4 spacings, had half their edges unreached.
-std::vector<double> radii_of_thin_walls(const Samples& samples, double spacing, SolidSampler& sampler) {
-  return sampler.edge_wall_radii(samples, spacing);
+// Per sample of a uniform sampling, half the thickness of a wall thinner than the spacing: on
+// faces from the samples (thin_walls.h; wedges of more than about 18 degrees are sampled finer
+// near their edge too: tail_turbine's 43-degree edges had holes in the sheet there), and exactly
+// at the rims (edge_walls.h), where the sheet forks to two edges a wall's thickness apart: a chip
+// resistor's terminal caps, 1.4 spacings thick, had half their edges unreached, and the sample
+// estimate had missed them. The mirrored faces (mirror_thin_walls.h) carry a sheet at any
+// spacing, but not its junctions: without the faces' radii the Y-rod at 15,000 samples had one
+// loop too many and NIST FTC 11 four.
+std::vector<double> radii_of_thin_walls(const Samples& samples, const Features& features, double spacing,
+                                        SolidSampler& sampler, const Progress& progress, int threads) {
+  std::vector<double> radii =
+      wall_radii(samples, spacing, convex_face_pairs(features), kSharpWedgeDot, progress, threads);
+  // Mirrored faces carry the wall's sheet: only its rims and junctions need the finer samples.
+  if (sampler.mirrors_thin_walls()) keep_near_edges(samples, kJunctionReach * spacing, radii);
+  const std::vector<double> rims = sampler.edge_wall_radii(samples, spacing);
+  for (std::size_t i = 0; i < radii.size(); ++i) radii[i] = std::min(radii[i], rims[i]);
+  return radii;
 }
 
-// Whether radii_of_thin_walls would find any.
-bool has_thin_walls(const Samples& samples, double spacing, SolidSampler& sampler) {
-  for (double r : sampler.edge_wall_radii(samples, spacing))
+// Whether radii_of_thin_walls finds any (run beside the triangulation, on one thread).
+bool has_thin_walls(const Samples& samples, const Features& features, double spacing, SolidSampler& sampler,
+                    const Progress& progress) {
+  for (double r : radii_of_thin_walls(samples, features, spacing, sampler, progress, 1))
     if (r < spacing) return true;
   return false;
 }
@@ -311,7 +325,7 @@ std::vector<SolidSampling> sample_solids(std::vector<std::unique_ptr<SolidSample
     s.walls_pending = true;
     if (defer_walls) continue;
     naming_solid(i, samplers.size(), [&] {
-      const std::vector<double> radii = radii_of_thin_walls(s.samples, spacing, *samplers[i]);
+      const std::vector<double> radii = radii_of_thin_walls(s.samples, features[i], spacing, *samplers[i], progress, 2);
       resample_for(s, features[i], m.solids[i], spacing, radii, *samplers[i], progress);
     });
   }
@@ -534,7 +548,7 @@ SolidAxis axis_of(const SolidJob& job, SolidSampling& sampling, double spacing, 
               // Most parts have no wall this thin at their spacing: looking beside the
               // triangulation saves the check's time; where one is, the triangulation is given
               // up as soon as it is found.
-              const bool thin_walls = has_thin_walls(s.samples, spacing, sampler);
+              const bool thin_walls = has_thin_walls(s.samples, f, spacing, sampler, worker);
               walls_seconds += seconds_since(start);
               if (thin_walls) {
                 resample = true;
@@ -614,7 +628,7 @@ SolidAxis axis_of(const SolidJob& job, SolidSampling& sampling, double spacing, 
     worker_done.get();
     try {
       naming_solid(i, n, [&] {
-        const std::vector<double> radii = radii_of_thin_walls(samples, spacing, job.sampler);
+        const std::vector<double> radii = radii_of_thin_walls(samples, job.features, spacing, job.sampler, sub, 2);
         resample_for(sampling, job.features, job.measure, spacing, radii, job.sampler, sub);
       });
     } catch (const Cancelled&) {

@@ -1,9 +1,11 @@
 #include "edge_walls.h"
 
+#include <cmath>
 #include <limits>
 
 #include "../two_cores.h"
 #include "mirror_thin_walls.h"
+#include "point_grid.h"
 
 namespace cadmedial {
 
@@ -35,6 +37,25 @@ std::vector<double> edge_wall_radii(const Samples& samples, BoundaryDistance* bo
   for (std::size_t k = 0; k < t.size(); ++k)
     if (t[k].s >= 0) radii[t[k].s] = std::min(radii[t[k].s], at[k]);
   return radii;
+}
+
+void keep_near_edges(const Samples& samples, double reach, std::vector<double>& radii) {
+  PointGrid edges(reach);
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    if (samples.tag[i] != SampleTag::Face && samples.tag[i] != SampleTag::Triplet)
+      edges.insert(samples.points[i], static_cast<int>(i));
+  const double reach2 = reach * reach;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (!std::isfinite(radii[i]) || (samples.tag[i] != SampleTag::Face && samples.tag[i] != SampleTag::Triplet))
+      continue;
+    const Point3& p = samples.points[i];
+    const bool near = edges.any_near(p, reach, [&](int j) {
+      const Point3& q = samples.points[j];
+      const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+      return dx * dx + dy * dy + dz * dz < reach2;
+    });
+    if (!near) radii[i] = std::numeric_limits<double>::infinity();
+  }
 }
 
 }  // namespace cadmedial

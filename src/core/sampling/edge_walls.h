@@ -19,4 +19,9 @@ namespace cadmedial {
 std::vector<double> edge_wall_radii(const Samples& samples, BoundaryDistance* boundaries[2], double r_max,
                                     double tol);
 
+/// `radii` (per sample) kept only at samples within `reach` of a sample of an edge or a corner:
+/// a thin wall's rims and junctions, where the sheet forks or joins the rest of the axis.
+/// Infinity elsewhere: the wall's interior is sampled in mirrored pairs, which carry its sheet.
+void keep_near_edges(const Samples& samples, double reach, std::vector<double>& radii);
+
 }  // namespace cadmedial

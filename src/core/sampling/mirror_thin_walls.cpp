@@ -109,9 +109,11 @@ MirrorStats mirror_thin_walls(std::vector<sampling_detail::FaceInterior>& interi
     kept.probed_hi = own.probed_hi;
     for (std::size_t k = 0; k < own.point.size(); ++k) {
       const double h = field.at(own.point[k]);
-      // A sample whose wall has mirrors gives way to one within a spacing; any other, to one
-      // that would crowd it.
-      const double r = slave[f][k] ? h : 0.5 * h;
+      // A sample whose wall has mirrors gives way to one within 1.5 spacings (the mirrors'
+      // gaps are their side's, up to a spacing there, and the field may be finer on this side:
+      // within one spacing, a plate's own sample 0.5 from the mirrors stayed, and bent its
+      // sheet 35 % of the thickness off the mid-plane); any other, to one that would crowd it.
+      const double r = slave[f][k] ? 1.5 * h : 0.5 * h;
       const bool near = grid.any_near(own.point[k], r, [&](int j) { return dist2(m.point[j], own.point[k]) < r * r; });
       if (near) {
         ++st.replaced;

@@ -1065,6 +1065,7 @@ SolidSampler::~SolidSampler() = default;
 int SolidSampler::kept_faces() const { return state_->kept_faces; }
 
 void SolidSampler::mirror_thin_walls(bool on) { state_->mirror = on; }
+bool SolidSampler::mirrors_thin_walls() const { return state_->mirror; }
 std::size_t SolidSampler::mirrored() const { return state_->mirrored; }
 
 std::vector<double> SolidSampler::edge_wall_radii(const Samples& samples, double r_max) {

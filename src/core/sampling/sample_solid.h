@@ -97,6 +97,7 @@ class SolidSampler {
   /// Whether walls thinner than a few spacings are sampled in mirrored pairs
   /// (mirror_thin_walls.h); on by default.
   void mirror_thin_walls(bool on);
+  bool mirrors_thin_walls() const;
   /// How many face samples the last sample() placed as mirrors of a thin wall's other side.
   std::size_t mirrored() const;
   /// edge_wall_radii (edge_walls.h) of a sampling this sampler made, for walls up to 2 r_max thick.

@@ -177,27 +177,33 @@ TEST(ThinWalls, WithOneSpacingThePipelineWarnsAndReportsTheThickness) {
   EXPECT_TRUE(std::isinf(thick.stats.solids[0].thinnest_wall));
 }
 
-// Adaptive sampling (the default): the 1-thick plate at spacing 1 is sampled again at a quarter to
-// a half of the spacing (0.5 per unit of its medial radius 0.5, at least 1/4), which resolves it:
-// no warning, and the medial axis has the plate's topology. A plate 0.4 thick needs a spacing of
-// 0.1, finer than 1/4: the warning stays and says so. A thick block is sampled once, unchanged.
-TEST(ThinWalls, AdaptiveSamplingResolvesThinWallsDownToAQuarterOfTheSpacing) {
+// Adaptive sampling (the default): a plate thinner than the spacing is sampled in mirrored pairs
+// (mirror_thin_walls.h), whose sheet lies on the mid-plane at any spacing, and finer only at its
+// rims and junctions (edge_walls.h). The 1-thick plate at spacing 1 and one 0.4 thick: the plate's
+// topology, the sheet at the mid-plane with radius half the thickness away from the rims, and
+// fewer samples than refining the whole faces took (16 times their samples, by the old rule). A
+// thick block is sampled once, unchanged.
+TEST(ThinWalls, AdaptiveSamplingResolvesThinPlatesInMirroredPairs) {
   const auto [uniform, adaptive] = uniform_and_adaptive(1.0);
-
-  const TopoDS_Solid plate = test::make_box(30, 30, 1);
-  const ComputeResult once = compute_medial_axis(plate, uniform);
-  const ComputeResult adapted = compute_medial_axis(plate, adaptive);
-  EXPECT_TRUE(adapted.stats.warnings.empty()) << adapted.stats.warnings[0];
-  // Both big faces at a spacing of 0.25 instead of 1: about 16 times their samples.
-  EXPECT_GT(adapted.stats.samples, 8 * once.stats.samples);
-  EXPECT_EQ(adapted.stats.solids[0].euler_characteristic, 1);
-  EXPECT_EQ(adapted.stats.solids[0].components, 1u);
-
-  const ComputeResult thinner = compute_medial_axis(test::make_box(12, 12, 0.4), adaptive);
-  ASSERT_EQ(thinner.stats.warnings.size(), 1u);
-  EXPECT_NE(thinner.stats.warnings[0].find("the finest the sampling adapts to"), std::string::npos)
-      << thinner.stats.warnings[0];
-  EXPECT_LE(thinner.stats.solids[0].thinnest_wall, 0.48);
+  for (const double t : {1.0, 0.4}) {
+    const TopoDS_Solid plate = test::make_box(30, 30, t);
+    const ComputeResult once = compute_medial_axis(plate, uniform);
+    const ComputeResult adapted = compute_medial_axis(plate, adaptive);
+    EXPECT_EQ(adapted.stats.solids[0].euler_characteristic, 1) << t;
+    EXPECT_EQ(adapted.stats.solids[0].components, 1u) << t;
+    EXPECT_GT(adapted.stats.solids[0].mirrored_samples, 0u) << t;
+    EXPECT_GT(adapted.stats.samples, once.stats.samples) << t << ": the rims are sampled finer";
+    EXPECT_LT(adapted.stats.samples, 8 * once.stats.samples) << t;
+    std::size_t on_sheet = 0;
+    for (std::size_t v = 0; v < adapted.mesh.num_vertices(); ++v) {
+      const Point3& p = adapted.mesh.vertices[v];
+      if (p[0] < 2 * t || p[0] > 30 - 2 * t || p[1] < 2 * t || p[1] > 30 - 2 * t) continue;
+      ++on_sheet;
+      EXPECT_NEAR(p[2], t / 2, 1e-6 * t) << t << ": vertex " << v;
+      EXPECT_NEAR(adapted.mesh.radius[v], t / 2, 1e-6 * t) << t << ": vertex " << v;
+    }
+    EXPECT_GT(on_sheet, 100u) << t;
+  }
 
   const TopoDS_Solid block = test::make_box(20, 20, 20);
   const ComputeResult block_once = compute_medial_axis(block, uniform);
@@ -241,10 +247,10 @@ TEST(ThinWalls, TheCheckBesideTheTriangulationTakesThePreviewsSamples) {
       EXPECT_EQ(result.stats.solids[k].euler_characteristic, 1) << "solid " << k;
     }
   }
-  // The plate was refined (about 16 times the samples of its big faces), the block not.
+  // The plate was refined (at its rims), the block not.
   ComputeParams uniform = params;
   uniform.sampling.adapt_to_walls = false;
-  EXPECT_GT(compute_medial_axis(plate, params).stats.samples, 8 * compute_medial_axis(plate, uniform).stats.samples);
+  EXPECT_GT(compute_medial_axis(plate, params).stats.samples, compute_medial_axis(plate, uniform).stats.samples);
   EXPECT_EQ(compute_medial_axis(block, params).stats.samples, compute_medial_axis(block, uniform).stats.samples);
 }
 
