@@ -4,7 +4,6 @@ on. Most tests share one in-process cluster (a Client passed in); test_scheduler
 default local cluster and a separate one given by its address."""
 
 import csv
-import importlib.util
 import json
 import os
 import shutil
@@ -200,10 +199,11 @@ def test_a_part_past_the_memory_limit_is_recorded(tmp_path, client, cli):
     assert not os.path.exists(outputs.mesh_path(str(out), "nist_ftc_11_asme1_rb.stp", "ply"))
 
 
-def test_thickness_is_refused_until_it_exists(tmp_path, cli):
-    if importlib.util.find_spec("cadmedial.thickness") is not None:
-        pytest.skip("cadmedial.thickness exists: the hook is exercised by its own tests")
-    with pytest.raises(cadmedial.InvalidInput, match="issue 34"):
+def test_an_analysis_that_is_not_installed_is_refused_before_any_part(tmp_path, cli, monkeypatch):
+    from cadmedial.batch import analyses
+    monkeypatch.setitem(analyses.KNOWN, "thickness", analyses.AnalysisSpec(
+        "cadmedial.no_such_analysis", "the wall-thickness analysis (issue 34)", ("min", "max")))
+    with pytest.raises(cadmedial.InvalidInput, match="not in this version"):
         cadmedial.batch(os.path.join(DATA, "box_10x20x30.step"), tmp_path / "out", thickness={"min": 0.8},
                         cli=cli, progress=False)
     assert not (tmp_path / "out" / "summary.csv").exists()

@@ -31,10 +31,21 @@ def test_a_missing_input_is_one_error_line(cli, tmp_path):
     assert p.stderr.splitlines() == ["cadmedial: error: batch: %s: no such file or folder" % (tmp_path / "nothing.step")]
 
 
-def test_thickness_before_it_exists_is_refused(cli, tmp_path):
-    p = run(cli, os.path.join(DATA, "box_10x20x30.step"), "-o", str(tmp_path / "out"), "--thickness", "--min", "0.8")
-    assert p.returncode == 2
-    assert "issue 34" in p.stderr and len(p.stderr.splitlines()) == 1
+def test_thickness_adds_its_columns_and_files(cli, tmp_path):
+    # The 10 x 20 x 30 box: walls 10 thick, so a 12 minimum fails it, found thin; its medial
+    # axis is still computed ("ok"): the thickness is a result, not a failure.
+    out = tmp_path / "out"
+    p = run(cli, os.path.join(DATA, "box_10x20x30.step"), "-o", str(out), "--jobs", "1",
+            "--samples", str(SAMPLES), "--thickness", "--min", "12")
+    assert p.returncode == 0, p.stderr
+    with open(out / "summary.csv", newline="") as f:
+        row = next(csv.DictReader(f))
+    assert row["status"] == "ok"
+    assert row["thickness_passed"] == "False"
+    assert abs(float(row["thickness_max"]) - 10.0) < 0.1
+    assert int(row["thin_regions"]) >= 1
+    assert (out / "parts" / "box_10x20x30.step_thickness.json").is_file()
+    assert (out / "parts" / "box_10x20x30.step_thickness_regions.csv").is_file()
 
 
 def test_a_batch_with_a_bad_part_exits_3_with_the_summary(cli, tmp_path):

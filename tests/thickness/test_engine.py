@@ -1,9 +1,9 @@
-"""Thickness from today's engine on solids of known wall thickness.
+"""Thickness from the engine on solids of known wall thickness.
 
-Today a medial vertex's radius is its distance to the nearest boundary *sample*, up to a few
-percent more than its distance to the B-rep (issue 32 makes it exact; test_exact_balls.py shows
-the thickness layer itself is then within 1 %). ENGINE_RTOL is today's measured error with room:
-p95 of |error| was 4.2 % (tilted slab), 1.6 % (tube), 0.8 % (shell) on 2026-12-07."""
+A medial vertex's radius is its distance to the B-rep (issue 32's exact radii); the thickness read
+from the balls is then within 1 % on most of the surface: p95 of |error| 0.32 % (tilted slab),
+0.13 % (tube), 0.06 % (shell) on 2026-12-07 (/tmp/p95.py's loop over these solids). The worst
+points (52 % and 76 % on slab and tube) lie where an edge's band meets the wall."""
 
 import numpy as np
 import pytest
@@ -11,7 +11,7 @@ import pytest
 from conftest import RIB, rib_on_plate, spherical_shell, tilted_slab, tube
 from cadmedial.thickness import probe, thickness
 
-ENGINE_RTOL = 0.05  # 0.01 once issue 32's exact radii land
+ENGINE_RTOL = 0.01
 
 
 def p95_error(result, true):
