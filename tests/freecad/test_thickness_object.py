@@ -59,10 +59,11 @@ def test_rib_is_thin_then_recomputes_saves_and_reopens(doc, tmp_path):
     path = str(tmp_path / "thickness.FCStd")
     values = list(obj.Values)
     status = obj.Status
+    name = obj.Name
     doc.saveAs(path)
     FreeCAD.closeDocument(doc.Name)
     again = FreeCAD.openDocument(path)
-    obj2 = again.getObject(obj.Name)
+    obj2 = again.getObject(name)
     assert obj2.Status == status
     assert list(obj2.Values) == pytest.approx(values)
     assert obj2.Mesh.CountPoints == len(values)
