@@ -114,8 +114,12 @@ def _view_widgets(doc):
 
 
 def legend_of(widget):
-    """The legend on a 3D view's graphics widget, or None."""
-    return widget.findChild(QtWidgets.QFrame, OBJECT_NAME)
+    """The legend on a 3D view's graphics widget, or None (also when PySide's wrapper outlived
+    the widget, as it can while a document closes and another opens)."""
+    try:
+        return widget.findChild(QtWidgets.QFrame, OBJECT_NAME)
+    except RuntimeError:
+        return None
 
 
 def refresh(doc, leaving=None):
@@ -130,11 +134,16 @@ def refresh(doc, leaving=None):
             continue
         entries.append((obj.Label, obj.RadiusMin.Value, obj.RadiusMax.Value))
     widgets = _view_widgets(doc)
+    shown = False
     for widget in widgets:
         legend = legend_of(widget)
-        if legend is None:
-            if not entries:
-                continue
-            legend = RadiusLegend(widget)
-        legend.set_entries(entries)
-    return bool(widgets) and bool(entries)
+        try:
+            if legend is None:
+                if not entries:
+                    continue
+                legend = RadiusLegend(widget)
+            legend.set_entries(entries)
+            shown = True
+        except RuntimeError:  # the widget was deleted under its PySide wrapper
+            continue
+    return shown and bool(entries)
