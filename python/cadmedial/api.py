@@ -82,11 +82,17 @@ def _density(spacing, samples):
             0 if samples is None else samples)
 
 
-def plan_sampling(source, spacing=None, samples=None):
+def _min_feature(size):
+    """SamplingParams::min_feature from compute()'s argument (None: no minimum)."""
+    return 0.0 if size is None else _number("min_feature", size)
+
+
+def plan_sampling(source, spacing=None, samples=None, min_feature=None):
     """SamplingPlan(spacing, estimated_samples) for ``source`` (see read_shape) and the density
     parameters, without computing anything else: fast enough for a live preview."""
     spacing, samples = _density(spacing, samples)
-    return SamplingPlan(*_core.plan_sampling(read_shape(source), spacing, samples))
+    return SamplingPlan(*_core.plan_sampling(read_shape(source), spacing, samples,
+                                             _min_feature(min_feature)))
 
 
 def _flag(name, value):
@@ -104,7 +110,7 @@ def refines_by_default(spacing, samples):
 
 
 def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=None,
-            plain_medial=False, adapt=True, refine=None):
+            plain_medial=False, adapt=True, refine=None, min_feature=None):
     """The inner medial axis of every solid of ``source``.
 
     source    a STEP/IGES/BREP file path, BREP text, a FreeCAD Part.Shape or a _core.Shape
@@ -129,6 +135,9 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
               refines only when neither spacing nor samples is given: a density you chose is kept.
               Each solid's stats say how often it was refined ("refinements") and at what
               spacing ("spacing").
+    min_feature  None (default) or a size in model units: walls thinner than it are not
+              sampled finer than it needs ("ignore features below 0.01 mm"); a warning names the
+              thinnest of them and where it is. Like the program's --min-feature.
 
     Returns a MedialAxisResult. Raises InvalidInput (bad file, shape or parameter; also a
     ValueError), GeometryError (a stage failed; also a RuntimeError) or Cancelled.
@@ -140,7 +149,7 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
     adapt = _flag("adapt", adapt)
     mesh, stats = _core.compute_medial_axis(shape, spacing, samples, _number("theta", theta),
                                             _number("rho", rho), progress, plain_medial, adapt,
-                                            refine)
+                                            refine, min_feature=_min_feature(min_feature))
     return MedialAxisResult(mesh, json.loads(stats))
 
 

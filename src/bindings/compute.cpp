@@ -45,7 +45,8 @@ const char* shape_type_name(const TopoDS_Shape& shape) {
 }
 
 ComputeParams make_params(double spacing, long long samples, double theta, double rho,
-                          bool plain_medial = false, bool adapt = true, bool refine = false) {
+                          bool plain_medial = false, bool adapt = true, bool refine = false,
+                          double min_feature = 0.0) {
   // size_t would turn -1 into a huge count; say what is wrong instead.
   if (samples < 0) throw InvalidInput("samples must be >= 0, got " + std::to_string(samples));
   ComputeParams params;
@@ -56,6 +57,7 @@ ComputeParams make_params(double spacing, long long samples, double theta, doubl
   params.medial.plain_medial = plain_medial;
   params.sampling.adapt_to_walls = adapt;
   params.sampling.refine_topology = refine;
+  params.sampling.min_feature = min_feature;
   return params;
 }
 
@@ -144,8 +146,8 @@ void bind_compute(py::module_& m) {
 
   m.def(
       "plan_sampling",
-      [](const TopoDS_Shape& shape, double spacing, long long samples) {
-        ComputeParams params = make_params(spacing, samples, 5.0, 8.0);
+      [](const TopoDS_Shape& shape, double spacing, long long samples, double min_feature) {
+        ComputeParams params = make_params(spacing, samples, 5.0, 8.0, false, true, false, min_feature);
         SamplingPlan plan;
         {
           py::gil_scoped_release release;
@@ -153,30 +155,32 @@ void bind_compute(py::module_& m) {
         }
         return std::make_pair(plan.spacing, plan.estimated_samples);
       },
-      py::arg("shape"), py::arg("spacing") = 0.0, py::arg("samples") = 0,
+      py::arg("shape"), py::arg("spacing") = 0.0, py::arg("samples") = 0, py::arg("min_feature") = 0.0,
       "(spacing, estimated number of samples) that these parameters give for the shape.");
 
   m.def(
       "compute_medial_axis",
       [](const TopoDS_Shape& shape, double spacing, long long samples, double theta, double rho,
-         const py::object& progress, bool plain_medial, bool adapt, bool refine) {
+         const py::object& progress, bool plain_medial, bool adapt, bool refine, double min_feature) {
         if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
           throw py::type_error("progress must be callable(stage, fraction) or None");
         ComputeResult result =
-            compute_with_callback(shape, make_params(spacing, samples, theta, rho, plain_medial, adapt, refine),
+            compute_with_callback(shape, make_params(spacing, samples, theta, rho, plain_medial, adapt, refine, min_feature),
                               progress);
         std::string stats = stats_to_json(result.stats);
         return std::make_pair(std::move(result.mesh), std::move(stats));
       },
       py::arg("shape"), py::arg("spacing") = 0.0, py::arg("samples") = 0, py::arg("theta") = 5.0,
       py::arg("rho") = 8.0, py::arg("progress") = py::none(), py::arg("plain_medial") = false,
-      py::arg("adapt") = true, py::arg("refine") = false,
+      py::arg("adapt") = true, py::arg("refine") = false, py::arg("min_feature") = 0.0,
       "Inner medial axis of every solid of the shape: (MedialMesh, stats as JSON text).\n"
       "plain_medial runs the paper's plain MEDIAL (section 3: pole umbrellas, no edge or corner "
       "completion) instead of CAD_MEDIAL; theta is not changed (the paper uses 22.5 for it).\n"
       "adapt=False samples at one spacing everywhere (no refinement of thin walls).\n"
       "refine=True samples a solid again, finer, where its axis's Euler characteristic is not the "
       "solid's (at most twice, 2.5 times the samples each time).\n"
+      "min_feature > 0: walls thinner than it are not sampled finer than it needs (a warning names "
+      "them).\n"
       "progress(stage, fraction) is called with the GIL held; returning a falsy value other than "
       "None raises Cancelled, and an exception it raises cancels the work and propagates.");
 

@@ -13,8 +13,8 @@ namespace cadmedial::cli {
 std::string usage() {
   return
       "usage:\n"
-      "  cadmedial compute INPUT -o OUTPUT [--spacing S | --samples N] [--refine] [--theta DEG]\n"
-      "                    [--rho R] [--stats FILE.json] [--quiet]\n"
+      "  cadmedial compute INPUT -o OUTPUT [--spacing S | --samples N] [--refine] [--min-feature F]\n"
+      "                    [--theta DEG] [--rho R] [--stats FILE.json] [--quiet]\n"
       "  cadmedial info INPUT [--spacing S | --samples N]\n"
       "  cadmedial batch INPUTS... -o OUTDIR [--jobs N] [--scheduler ADDRESS] [--timeout S]\n"
       "                  [--memory GB] [--force] [compute options]   (see cadmedial batch --help)\n"
@@ -34,6 +34,8 @@ std::string usage() {
       "                   solid's (holes or extra loops: too few samples for its walls), sample that\n"
       "                   solid again with 2.5 times the samples, at most twice; the default when\n"
       "                   neither --spacing nor --samples is given\n"
+      "  --min-feature F  walls thinner than F (model units) are not sampled finer than F needs;\n"
+      "                   a warning names the thinnest of them and where it is\n"
       "  --theta DEG      Angle condition threshold in degrees, in (0, 90) (default 5)\n"
       "  --rho R          Ratio condition threshold, > 0 (default 8)\n"
       "  --stats F        also write run statistics as JSON\n"
@@ -119,6 +121,8 @@ Args parse_args(const std::vector<std::string>& argv) {
     } else if (arg == "--samples") {
       args.params.sampling.target_samples = count(arg, take_value());
       samples_set = true;
+    } else if (arg == "--min-feature") {
+      args.params.sampling.min_feature = positive(arg, take_value());
     } else if (arg == "--theta") {
       const std::string text = take_value();
       const double theta = parse_number(arg, text);

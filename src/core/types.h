@@ -66,6 +66,9 @@ struct SamplingParams {
   /// again with 2.5 times the samples and compute it anew, at most twice. The command line and
   /// Python turn this on when the user gives no density.
   bool refine_topology = false;
+  /// Walls thinner than this (model units; 0 = none) are not sampled finer than it needs: the
+  /// user's "ignore features below 0.01 mm". What it leaves unresolved is named in a warning.
+  double min_feature = 0.0;
   static constexpr std::size_t default_target_samples = 20000;
 };
 

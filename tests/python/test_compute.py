@@ -114,6 +114,22 @@ def test_walls_thinner_than_two_spacings_are_warned_about(box_step):
     assert fine.stats["solids"][0]["thinnest_wall"] is None  # only walls under 2 spacings are looked for
 
 
+def test_walls_under_the_minimum_feature_size_are_not_sampled_finer_and_are_named(box_step):
+    # The 10-thick box at spacing 6 is sampled finer by default (above); a minimum feature size
+    # of 12 counts its wall as 12 thick, a radius of one spacing: kept at one spacing, and said.
+    coarse = cadmedial.compute(box_step, spacing=6.0, adapt=False)
+    limited = cadmedial.compute(box_step, spacing=6.0, min_feature=12.0)
+    assert limited.stats["samples"] == coarse.stats["samples"]
+    assert len(limited.stats["warnings"]) == 1
+    assert "thinner than the minimum feature size given (12)" in limited.stats["warnings"][0]
+    assert 10.0 - 1e-6 <= limited.stats["solids"][0]["thinnest_wall"] <= 12.0
+    assert cadmedial.plan_sampling(box_step, spacing=6.0, min_feature=12.0).estimated_samples == \
+        coarse.stats["samples"]
+    for bad in (-1.0, "thin", float("nan")):
+        with pytest.raises(cadmedial.InvalidInput):
+            cadmedial.compute(box_step, spacing=6.0, min_feature=bad)
+
+
 def test_refine_samples_a_thin_walled_cup_finer_until_its_axis_has_the_cups_topology(data):
     # Walls 1 thick at one spacing of 2: the sheets inside them break apart (the premise). A
     # density given is kept unless refine=True; then the cup is sampled again at 2 / sqrt(2.5).
@@ -138,9 +154,9 @@ def test_refine_defaults_to_on_only_when_no_density_is_given(box_step, monkeypat
     asked = []
     real = cadmedial._core.compute_medial_axis
 
-    def spy(*args):
+    def spy(*args, **kwargs):
         asked.append(args[-1])  # refine, the last positional argument
-        return real(*args)
+        return real(*args, **kwargs)
 
     monkeypatch.setattr(cadmedial._core, "compute_medial_axis", spy)
     cadmedial.compute(box_step)

@@ -862,6 +862,7 @@ MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& ins
   if (best >= 0) keep[best] = 1;
   for (size_t r = 0; r < items; ++r)
     if (piece_items[r] > 0 && piece_completion[r] >= 8 && piece_items[r] >= best_size / 100) keep[r] = 1;
+  st.kept_components = static_cast<std::size_t>(std::count(keep.begin(), keep.end(), 1));
 
   report(progress, "inner", 0.95);
   // The kept items' corners numbered in the order they come, then the mesh's arrays filled at

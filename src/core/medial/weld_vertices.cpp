@@ -1,6 +1,7 @@
 #include "weld_vertices.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
@@ -60,6 +61,9 @@ WeldStats weld_vertices(MedialMesh& mesh, double eps) {
   // Faces: consecutive repeats removed (a polygon that loops back through a vertex stays).
   std::set<std::vector<int>> seen_faces;
   std::set<std::pair<int, int>> sides;
+  std::vector<std::array<int, 2>> collapsed_sides;
+  std::vector<int> collapsed_side_solid;
+  std::vector<int> collapsed_points;
   std::vector<int> poly;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     poly.clear();
@@ -73,6 +77,14 @@ WeldStats weld_vertices(MedialMesh& mesh, double eps) {
     const bool distinct = std::adjacent_find(key.begin(), key.end()) == key.end();
     if (poly.size() < 3 || !distinct || !seen_faces.insert(key).second) {
       ++st.dropped_faces;
+      // What is left of a face that collapsed stays, as an edge or a point: contracting a short
+      // side keeps the axis's topology, dropping the face would not (a sphere's axis, its centre,
+      // is a cluster of Voronoi vertices that welds into one).
+      if (poly.size() == 2) {
+        collapsed_sides.push_back({poly[0], poly[1]});
+        collapsed_side_solid.push_back(mesh.solid[f]);
+      }
+      if (poly.size() == 1) collapsed_points.push_back(poly[0]);
       continue;
     }
     out.add_face(poly, mesh.kind[f], mesh.solid[f]);
@@ -92,6 +104,13 @@ WeldStats weld_vertices(MedialMesh& mesh, double eps) {
     out.edges.push_back({a, b});
     out.edge_solid.push_back(mesh.edge_solid[e]);
   }
+  for (std::size_t k = 0; k < collapsed_sides.size(); ++k) {
+    const int a = collapsed_sides[k][0], b = collapsed_sides[k][1];
+    const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+    if (sides.count(key) || !seen_edges.insert(key).second) continue;
+    out.edges.push_back({a, b});
+    out.edge_solid.push_back(collapsed_side_solid[k]);
+  }
   // Vertices no face or edge uses go (the merged ones, and any a dropped face alone held).
   std::vector<int> used(static_cast<std::size_t>(nv), -1);
   std::vector<char> held(static_cast<std::size_t>(nv), 0);  // by a face or an edge, before
@@ -99,6 +118,7 @@ WeldStats weld_vertices(MedialMesh& mesh, double eps) {
   for (const auto& e : mesh.edges) held[e[0]] = held[e[1]] = 1;
   for (int v : out.face_vertices) used[v] = 0;
   for (const auto& e : out.edges) used[e[0]] = used[e[1]] = 0;
+  for (int v : collapsed_points) used[v] = 0;
   MedialMesh packed;
   for (int v = 0; v < nv; ++v) {
     // A vertex on its own before (no face, no edge) stays, as the mesh had it.

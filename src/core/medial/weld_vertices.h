@@ -17,7 +17,9 @@ struct WeldStats {
 
 /// Merges the two ends of every side or edge shorter than `eps` (transitively; the merged vertex
 /// keeps the first's position and the smallest radius of the group), drops the faces and edges that degenerate, and
-/// the vertices no face or edge uses any more. Face order, kinds and solids are kept.
+/// the vertices no face or edge uses any more. A face that collapses to a segment stays as an
+/// edge (unless another face has that side), one that collapses to a point as a lone vertex: the
+/// topology is kept. Face order, kinds and solids are kept.
 WeldStats weld_vertices(MedialMesh& mesh, double eps);
 
 }  // namespace cadmedial

@@ -26,6 +26,10 @@ struct SolidStats {
   /// outside (beyond the samples' box, or by its samples' votes alone), which are not built
   std::size_t dropped_faces = 0;
   std::size_t components = 0;      ///< pieces of the inner axis before stray ones were dropped
+  std::size_t pieces = 0;          ///< pieces of the output (the stray ones floating inside dropped)
+  /// The axis has the solid's topology as far as the counts tell: one piece before the stray ones
+  /// were dropped, the solid's Euler characteristic (1-D edges counted).
+  bool topology_right = false;
   std::size_t filler_faces = 0;    ///< unselected Voronoi facets kept for the axis's topology
   std::size_t edges = 0;           ///< output edges: 1-D parts of the axis that no face carries
   std::size_t unattached_faces = 0;  ///< completion triangles left out because they would close a loop
@@ -51,7 +55,7 @@ struct SolidStats {
   std::size_t radii_corrected = 0;
   std::size_t vertices_moved_inside = 0;
   std::size_t mirrored_samples = 0;  ///< face samples placed as mirrors across thin walls
-  std::size_t welded_vertices = 0;  ///< output vertices closer than 1e-9 of the diagonal to another, merged  ///< vertices found outside, moved onto the boundary
+  std::size_t welded_vertices = 0;  ///< output vertices closer than 1e-9 of the diagonal to another, merged
 };
 
 struct ComputeStats {

@@ -75,6 +75,8 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"nonconcave_corners\": " + std::to_string(s.nonconcave_corners);
     j += ", \"dropped_faces\": " + std::to_string(s.dropped_faces);
     j += ", \"components\": " + std::to_string(s.components);
+    j += ", \"pieces\": " + std::to_string(s.pieces);
+    j += std::string(", \"topology_right\": ") + (s.topology_right ? "true" : "false");
     j += ", \"filler_faces\": " + std::to_string(s.filler_faces);
     j += ", \"opened_pockets\": " + std::to_string(s.opened_pockets);
     j += ", \"edges\": " + std::to_string(s.edges);
@@ -84,7 +86,7 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"spacing\": " + number(s.spacing);
     j += ", \"refinements\": " + std::to_string(s.refinements);
     j += ", \"exact_inside_tests\": " + std::to_string(s.exact_inside_tests);
-j += ", \"mirrored_samples\": " + std::to_string(s.mirrored_samples);
+    j += ", \"mirrored_samples\": " + std::to_string(s.mirrored_samples);
     j += ", \"welded_vertices\": " + std::to_string(s.welded_vertices);
     j += ", \"radius_max_excess\": " + number(s.radius_max_excess);
     j += ", \"radius_mean_excess\": " + number(s.radius_mean_excess);

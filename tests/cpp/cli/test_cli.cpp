@@ -18,7 +18,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <functional>
+#include <iterator>
 
 #include "core/io/write_medial_mesh.h"
 #include "io/io_test_files.h"
@@ -295,6 +297,32 @@ TEST(Cli, WarnsOfWallsThinnerThanTwoSpacings) {
   ASSERT_EQ(adapted.status, 0) << adapted.err;
   EXPECT_EQ(adapted.err, "");
 }
+
+// --min-feature 2 on the plate 1 thick: it is not sampled finer (about as many samples as
+// --uniform takes; refined, it takes 5.6 times as many), and the warning names the minimum given.
+TEST(Cli, NamesWallsBelowTheMinimumFeatureSize) {
+  TempDir dir;
+  const std::string plate = dir.file("plate.brep");
+  BRepTools::Write(BRepPrimAPI_MakeBox(30, 30, 1).Shape(), plate.c_str());
+  const CliRun r = run(dir, {"compute", plate, "-o", dir.file("plate.ply"), "--spacing", "1", "--quiet",
+                             "--min-feature", "2", "--stats", dir.file("limited.json")});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("thinner than the minimum feature size given (2)"), std::string::npos) << r.err;
+  const CliRun uniform = run(dir, {"compute", plate, "-o", dir.file("uniform.ply"), "--spacing", "1", "--quiet",
+                                   "--uniform", "--stats", dir.file("uniform.json")});
+  ASSERT_EQ(uniform.status, 0) << uniform.err;
+  auto samples_in = [](const std::string& path) {
+    std::ifstream in(path);
+    const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t at = json.find("\"samples\": ");
+    return at == std::string::npos ? -1L : std::strtol(json.c_str() + at + 11, nullptr, 10);
+  };
+  EXPECT_GT(samples_in(dir.file("limited.json")), 0);
+  // (Not one for one: the thin plate's faces are sampled in mirrored pairs without --uniform.)
+  EXPECT_LT(samples_in(dir.file("limited.json")), 1.05 * samples_in(dir.file("uniform.json")));
+}
+
+TEST(CliRefusal, MinFeatureNegative) { expect_refusal(with({"--min-feature", "-1"}), "--min-feature must be > 0"); }
 
 // The stats' figure `key` of the first solid (a number), or NaN.
 double first_solid_figure(const std::string& json, const std::string& key) {

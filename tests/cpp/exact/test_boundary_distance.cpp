@@ -162,5 +162,27 @@ TEST(WeldVertices, MergesNearDuplicatesAndDropsWhatDegenerates) {
   EXPECT_EQ(m.face(2)[0], 1);  // 3 became 1
 }
 
+// A face whose two ends weld together stays as the segment it became, one that welds into a point
+// as that point: the axis keeps its pieces (a sphere's axis, its centre, is such a cluster).
+TEST(WeldVertices, AFaceCollapsedToASegmentOrAPointKeepsItsPlace) {
+  MedialMesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1e-12, 0}, {5, 5, 5}, {5, 5, 5 + 1e-12}, {5, 5 + 1e-12, 5}};
+  m.radius = {0.5, 0.4, 0.3, 0.2, 0.1, 0.6};
+  m.add_face({0, 1, 2}, FaceKind::Voronoi, 0);  // a segment from 0 to 1
+  m.add_face({3, 4, 5}, FaceKind::Voronoi, 1);  // a point
+  const WeldStats st = cadmedial::weld_vertices(m, 1e-9);
+  EXPECT_EQ(st.merged_vertices, 3u);
+  EXPECT_EQ(st.dropped_faces, 2u);
+  EXPECT_EQ(m.num_faces(), 0u);
+  ASSERT_EQ(m.num_vertices(), 3u);
+  ASSERT_EQ(m.num_edges(), 1u);
+  EXPECT_EQ(m.edge_solid[0], 0);
+  const Point3 &a = m.vertices[m.edges[0][0]], &b = m.vertices[m.edges[0][1]];
+  EXPECT_NEAR(std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]), 1.0, 1e-9);
+  const int point = 3 - m.edges[0][0] - m.edges[0][1];  // the vertex the edge does not use
+  EXPECT_NEAR(m.vertices[point][0], 5.0, 1e-9);
+  EXPECT_DOUBLE_EQ(m.radius[point], 0.1);  // the smallest radius of the three
+}
+
 }  // namespace
 }  // namespace cadmedial::test

@@ -229,6 +229,40 @@ TEST(ThinWalls, AFewSmallThinWallsAreSampledFinerThanAQuarterOfTheSpacing) {
   EXPECT_LE(adapted.stats.samples, 3 * once.stats.samples);
 }
 
+// The user's minimum feature size (SamplingParams::min_feature): the 1-thick pin counts as 2
+// thick, so it is sampled finer than the block but half as finely as it needs, and the warning
+// says so with its place and thickness. A minimum under the pin's thickness changes nothing.
+TEST(ThinWalls, WallsBelowTheMinimumFeatureSizeAreSampledOnlyAsItNeedsAndNamed) {
+  const auto [uniform, adaptive] = uniform_and_adaptive(3.0);
+  const TopoDS_Solid pinned = test::make_block_with_boss(100, 100, 20, 0.5, 1.0);
+  const ComputeResult once = compute_medial_axis(pinned, uniform);
+  const ComputeResult full = compute_medial_axis(pinned, adaptive);
+  ComputeParams coarse = adaptive;
+  coarse.sampling.min_feature = 2.0;
+  const ComputeResult limited = compute_medial_axis(pinned, coarse);
+  EXPECT_GT(limited.stats.samples, once.stats.samples);
+  EXPECT_LT(limited.stats.samples, full.stats.samples);
+  ASSERT_EQ(limited.stats.warnings.size(), 1u);
+  const std::string& warning = limited.stats.warnings[0];
+  EXPECT_NE(warning.find("thinner than the minimum feature size given (2)"), std::string::npos) << warning;
+  EXPECT_NEAR(limited.stats.solids[0].thinnest_wall, 1.0, 0.05);
+  // Named where the pin is (on the block's top face, within its footprint).
+  const Point3 at = limited.stats.solids[0].thinnest_wall_at;
+  EXPECT_GE(at[2], 20.0 - 1e-6) << warning;
+  EXPECT_NEAR(at[0], 50.0, 1.0) << warning;
+  EXPECT_NEAR(at[1], 50.0, 1.0) << warning;
+
+  ComputeParams fine = adaptive;
+  fine.sampling.min_feature = 0.5;
+  const ComputeResult unchanged = compute_medial_axis(pinned, fine);
+  EXPECT_EQ(unchanged.stats.samples, full.stats.samples);
+  EXPECT_TRUE(unchanged.stats.warnings.empty()) << unchanged.stats.warnings[0];
+
+  ComputeParams bad = adaptive;
+  bad.sampling.min_feature = -1.0;
+  EXPECT_THROW(compute_medial_axis(pinned, bad), InvalidInput);
+}
+
 // compute_medial_axis checks the uniform sampling for thin walls beside its triangulation, and
 // gives that triangulation up when it must sample finer; sample_shape (the preview's path) checks
 // first. Both must take the same samples: a plate that is refined, a block that is not, and both
