@@ -37,7 +37,7 @@ def smoke(tmp_path_factory):
     keep = os.environ.get("CADMEDIAL_SCREENSHOT_DIR")
     if keep:
         os.makedirs(keep, exist_ok=True)
-        for name in ("thickness.png", "thickness_probe.png"):
+        for name in ("thickness.png", "thickness_probe.png", "thickness_window.png"):
             if (out / name).exists():
                 shutil.copy(out / name, keep)
     assert "exception" not in report, report["exception"]
@@ -106,7 +106,7 @@ def test_the_ball_and_ray_are_in_the_scene_graph(smoke):
 def test_a_click_stalls_the_gui_no_more_than_a_redraw(smoke):
     # The probe itself (projection, the balls' power, one OpenCASCADE section) and the whole
     # click as a 10 ms timer sees it; in Xvfb's software OpenGL one redraw of the scene is most
-    # of it, so the click is held to a plain redraw's stall plus 100 ms.
+    # of it, so the click is held to a plain redraw's stall (the worst of three) plus 100 ms.
     assert smoke["samples"] > 15000
     for p in smoke["probes"]:
         assert p["probe_ms"] < 100, p

@@ -43,7 +43,9 @@ class ProbeMarks:
 
     def show(self, view, hit):
         self.clear()
-        root = coin.SoSeparator()
+        # The inscribed ball and the ray lie inside the part: an annotation is drawn after the
+        # scene without the depth test, so they show through the surface.
+        root = coin.SoAnnotation()
         root.setName(PROBE_NODE)
         ball = coin.SoSeparator()
         ball.setName(BALL_NODE)
