@@ -69,23 +69,21 @@ class WallThickness:
             obj.setEditorMode(name, READ_ONLY)
         for name in ("Values", "Counted", "ThicknessColors"):
             obj.setEditorMode(name, HIDDEN)
+        legend_is_output(obj)
 
     def __getstate__(self):
-        # The settings the stored values were analysed with: a recompute with the same ones
-        # (after LegendMin/LegendMax changed) recolours and does not analyse again.
-        analysed = getattr(self, "analysed", None)
-        return None if analysed is None else {"analysed": list(analysed)}
+        return None
 
     def __setstate__(self, state):
         self.pending = None
         self.result = None
-        self.analysed = tuple(state["analysed"]) if isinstance(state, dict) else None
 
     dumps, loads = __getstate__, __setstate__
 
     def onDocumentRestored(self, obj):
         self.pending = None
         self.result = None
+        legend_is_output(obj)
 
     def onChanged(self, obj, prop):
         if prop in ("LegendMin", "LegendMax") and _restored(obj):
@@ -93,10 +91,6 @@ class WallThickness:
 
     def execute(self, obj):
         started = time.perf_counter()
-        if (getattr(self, "analysed", None) == parameters_of(obj) and obj.Values
-                and getattr(self, "pending", None) is None):
-            recolour(obj)  # only the legend changed
-            return
         try:
             result = self._take_pending(obj) or analyse(obj)
         except Exception as error:  # report it, keep the last good result
@@ -105,7 +99,6 @@ class WallThickness:
             return
         self.result = result
         store_result(obj, result)
-        self.analysed = parameters_of(obj)
         obj.ComputeTime = result.timings.get("total", time.perf_counter() - started)
 
     def _take_pending(self, obj):
@@ -137,6 +130,15 @@ def analyse(obj):
 def region_line(g):
     return "%s %.4g at (%.6g, %.6g, %.6g) on %s, area %.4g" % (
         g["kind"], g["extreme"], g["at"][0], g["at"][1], g["at"][2], " ".join(g["faces"]), g["area"])
+
+
+def legend_is_output(obj):
+    # A new legend range recolours from the stored values at once (onChanged): as output
+    # properties the range and the colours do not mark the object for a recompute, which would
+    # analyse the part again.
+    for name in ("LegendMin", "LegendMax", "ThicknessColors"):
+        if name in obj.PropertiesList:
+            obj.setPropertyStatus(name, "Output")
 
 
 def _restored(obj):
