@@ -91,6 +91,10 @@ def test_a_click_reads_the_sphere_and_ray_thickness(smoke):
         assert abs(p["sphere"] / p["exact"] - 1) < 0.02, p
         assert abs(p["ray"] / p["exact"] - 1) < 0.02, p
         assert abs(2 * p["ball_radius"] - p["sphere"]) < 1e-9
+    on_source = smoke["source_probe"]
+    assert on_source["face"].startswith("Face")
+    assert max(abs(a - b) for a, b in zip(on_source["at"], smoke["probes"][0]["point"])) < 0.5
+    assert abs(on_source["sphere"] / smoke["probes"][0]["exact"] - 1) < 0.02
     last = smoke["probes"][-1]
     assert "sphere %.4g mm" % last["sphere"] in smoke["status_bar"]
     assert "sphere %.4g mm" % last["sphere"] in smoke["probe_text"]
@@ -99,7 +103,7 @@ def test_a_click_reads_the_sphere_and_ray_thickness(smoke):
 
 def test_the_ball_and_ray_are_in_the_scene_graph(smoke):
     assert smoke["ball_node"] and smoke["ray_node"]
-    assert abs(smoke["ball_node_radius"] - smoke["probes"][-1]["ball_radius"]) < 1e-5
+    assert abs(smoke["ball_node_radius"] - smoke["last_ball_radius"]) < 1e-5
     assert (smoke["out"] / "thickness_probe.png").stat().st_size > 10000
 
 

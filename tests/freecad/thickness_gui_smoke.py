@@ -196,7 +196,8 @@ def check_probe(doc, obj, task):
                        "probed": hit is not before and hit is not None,
                        "sphere": hit and hit["sphere"], "ray": hit and hit["ray"],
                        "at": hit and hit["point"], "ball_radius": hit and hit["ball_radius"],
-                       "probe_ms": hit and round(hit["ms"], 1), "stall_ms": beat.gap()})
+                       "probe_ms": hit and round(hit["ms"], 1),
+                       "pick_ms": round(task.probe.pick_ms or 0, 1), "stall_ms": beat.gap()})
     report["probes"] = probes
     report["selection_after_clicks"] = [s.ObjectName for s in Gui.Selection.getSelectionEx()]
     Gui.Selection.clearSelection()
@@ -215,8 +216,17 @@ def check_probe(doc, obj, task):
     report["background_click_stall_ms"] = beat.gap()
     report["status_bar"] = Gui.getMainWindow().statusBar().currentMessage()
     report["probe_text"] = task.probe_text.text()
+    # On the source solid (the mesh hidden): the pick names the B-rep face.
+    obj.ViewObject.Visibility, task.source.ViewObject.Visibility = False, True
+    spin(0.3)
+    click(view, PROBES[0][0])
+    spin(0.3)
+    report["source_probe"] = {"face": task.probe.last["face"], "sphere": task.probe.last["sphere"],
+                              "at": task.probe.last["point"]}
+    obj.ViewObject.Visibility, task.source.ViewObject.Visibility = True, False
     ball = node_named(thickness_probe.BALL_NODE)
     report["ball_node"] = ball is not None
+    report["last_ball_radius"] = task.probe.last["ball_radius"]
     report["ray_node"] = node_named(thickness_probe.RAY_NODE) is not None
     if ball is not None:
         from pivy import coin

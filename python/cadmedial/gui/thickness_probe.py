@@ -103,6 +103,8 @@ class ThicknessProbe:
         self.marks = ProbeMarks()
         self.view = None
         self._callback = None
+        self._pressed = False
+        self.pick_ms = None  # the last click's ray pick (getObjectInfo), for the stall test
         self.last = None
         from scipy.spatial import cKDTree
         self._points = cKDTree(result.points)
@@ -153,26 +155,24 @@ class ThicknessProbe:
         event = node.getEvent()
         if event.getButton() != coin.SoMouseButtonEvent.BUTTON1:
             return
-        x, y = event.getPosition().getValue()
-        info = self.view.getObjectInfo((int(x), int(y)))
-        names = {self.source.Name} | ({self.wall.Name} if self.wall is not None else set())
-        if not info or info.get("Object") not in names:
-            return
-        node.setHandled()  # a probe, not a selection: the press and the release
         if event.getState() != coin.SoButtonEvent.DOWN:
+            if self._pressed:  # the release of a probing press: not a selection either
+                node.setHandled()
+            self._pressed = False
             return
+        started = time.perf_counter()
+        x, y = event.getPosition().getValue()
+        info = self.view.getObjectInfo((int(x), int(y)))  # a ray pick: the press only
+        names = {self.source.Name} | ({self.wall.Name} if self.wall is not None else set())
+        self._pressed = bool(info) and info.get("Object") in names
+        if not self._pressed:
+            return
+        node.setHandled()  # a probe, not a selection
+        self.pick_ms = 1000.0 * (time.perf_counter() - started)
+        # A pick on the source names its face; one on the mesh says "Main": the face is then
+        # that of the nearest analysed point.
         component = info.get("Component") or ""
-        face = None
-        if info["Object"] == self.source.Name and component.startswith("Face"):
-            face = component
-        elif component.startswith("Facet") and component[5:].isdigit():
-            tri = int(component[5:])
-            # The mesh keeps the analysis's triangle order; checked, as a dropped degenerate
-            # facet would shift it.
-            if tri < len(self.result.triangles) and np.linalg.norm(
-                    self.result.points[self.result.triangles[tri]].mean(axis=0)
-                    - (info["x"], info["y"], info["z"])) < 3 * self.result.settings["spacing"]:
-                face = self.result.face_names[self.result.triangle_face[tri]]
+        face = component if info["Object"] == self.source.Name and component.startswith("Face") else None
         self.probe_at(np.array([info["x"], info["y"], info["z"]]), face)
 
     def close(self):
