@@ -37,7 +37,8 @@ def smoke(tmp_path_factory):
     keep = os.environ.get("CADMEDIAL_SCREENSHOT_DIR")
     if keep:
         os.makedirs(keep, exist_ok=True)
-        for name in ("thickness.png", "thickness_probe.png", "thickness_window.png"):
+        for name in ("thickness.png", "thickness_probe.png", "thickness_window.png",
+                     "thickness.json"):
             if (out / name).exists():
                 shutil.copy(out / name, keep)
     assert "exception" not in report, report["exception"]
