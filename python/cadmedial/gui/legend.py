@@ -127,6 +127,12 @@ def legend_of(widget, name=OBJECT_NAME):
         return None
 
 
+def first_legend(doc, name=OBJECT_NAME):
+    """The legend named ``name`` over doc's first 3D view that has one, or None."""
+    return next((f for f in (legend_of(w, name) for w in _view_widgets(doc)) if f is not None),
+                None)
+
+
 def refresh(doc, leaving=None):
     """Shows the ranges of the visible MedialAxis objects of doc (but `leaving`, being deleted)
     in a legend over each of its 3D views; hides the legend when there is none. Returns whether

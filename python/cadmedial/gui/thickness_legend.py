@@ -47,8 +47,7 @@ def refresh(doc, leaving=None):
 
 def legend_on(doc):
     """The thickness legend widget over doc's first 3D view that has one, or None."""
-    return next((f for f in (legend.legend_of(w, OBJECT_NAME) for w in legend._view_widgets(doc))
-                 if f is not None), None)
+    return legend.first_legend(doc, OBJECT_NAME)
 
 
 def refresh_later(doc, tries=20):
