@@ -82,3 +82,29 @@ def test_bad_input_changes_nothing(doc):
     with pytest.raises(cadmedial.InvalidInput):
         make_wall_thickness(plane, min_wall=1)
     assert [o.Name for o in doc.Objects] == before
+
+
+def test_legend_range_recolours_a_reopened_object_without_an_analysis(doc, tmp_path, monkeypatch):
+    from cadmedial.app import thickness_object
+    from cadmedial.colormap import colors_of
+    part, _ = add_ribbed_plate(doc)
+    obj = make_wall_thickness(part, min_wall=1.5, samples=20000)
+    name, path = obj.Name, str(tmp_path / "legend.FCStd")
+    doc.saveAs(path)
+    FreeCAD.closeDocument(doc.Name)
+    again = FreeCAD.openDocument(path)
+    obj = again.getObject(name)
+    calls = []
+    original = thickness_object.analyse
+    monkeypatch.setattr(thickness_object, "analyse", lambda o: calls.append(o) or original(o))
+    values, counted = np.array(obj.Values), np.array(obj.Counted, bool)
+    plate = int(np.nonzero(counted & (np.abs(values - 4.0) < 0.01))[0][0])
+    thin = int(np.nonzero(counted & (values < 1.5))[0][0])
+    obj.LegendMin, obj.LegendMax = 3.0, 6.0
+    colours = np.array([c[:3] for c in obj.ThicknessColors])
+    assert colours[plate] == pytest.approx(colors_of([values[plate]], 3.0, 6.0)[0], abs=1.5 / 255)
+    assert colours[thin] == pytest.approx(thickness_object.THIN_COLOUR, abs=1.5 / 255)
+    assert "Touched" not in obj.State  # only the colours changed: nothing to recompute
+    again.recompute()
+    assert calls == []
+    assert np.array([c[:3] for c in obj.ThicknessColors]) == pytest.approx(colours)

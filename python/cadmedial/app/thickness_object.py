@@ -69,6 +69,7 @@ class WallThickness:
             obj.setEditorMode(name, READ_ONLY)
         for name in ("Values", "Counted", "ThicknessColors"):
             obj.setEditorMode(name, HIDDEN)
+        legend_is_output(obj)
 
     def __getstate__(self):
         return None
@@ -82,6 +83,11 @@ class WallThickness:
     def onDocumentRestored(self, obj):
         self.pending = None
         self.result = None
+        legend_is_output(obj)
+
+    def onChanged(self, obj, prop):
+        if prop in ("LegendMin", "LegendMax") and _restored(obj):
+            recolour(obj)
 
     def execute(self, obj):
         started = time.perf_counter()
@@ -126,19 +132,62 @@ def region_line(g):
         g["kind"], g["extreme"], g["at"][0], g["at"][1], g["at"][2], " ".join(g["faces"]), g["area"])
 
 
-def colours_for(obj, result):
-    """(N, 3) colours: viridis over the legend range, thin/thick regions highlighted, the
-    excluded corner band grey."""
+def legend_is_output(obj):
+    # A new legend range recolours from the stored values at once (onChanged): as output
+    # properties the range and the colours do not mark the object for a recompute, which would
+    # analyse the part again.
+    for name in ("LegendMin", "LegendMax", "ThicknessColors"):
+        if name in obj.PropertiesList:
+            obj.setPropertyStatus(name, "Output")
+
+
+def _restored(obj):
+    # While a document loads, properties arrive one by one: colours are loaded, not made.
+    return "Restore" not in obj.State and not getattr(obj.Document, "Restoring", False)
+
+
+def legend_range(obj, low=None, high=None):
+    """(low, high) of the colour map: LegendMin..LegendMax, or the counted values' range
+    (ThicknessMin..ThicknessMax, or low/high given) when LegendMax is not above LegendMin."""
     lo, hi = float(obj.LegendMin.Value), float(obj.LegendMax.Value)
-    if not hi > lo:
-        lo = result.statistics["min"] or 0.0
-        hi = result.statistics["max"] or 1.0
-    rgb = colors_of(result.values, lo, hi).astype(np.float64)
-    rgb[~result.counted] = EXCLUDED_COLOUR
-    for regions, colour in ((result.thin_regions, THIN_COLOUR), (result.thick_regions, THICK_COLOUR)):
-        for g in regions:
-            rgb[g["point_indices"]] = colour
+    if hi > lo:
+        return lo, hi
+    lo = float(obj.ThicknessMin.Value) if low is None else low
+    hi = float(obj.ThicknessMax.Value) if high is None else high
+    return (lo, hi) if hi > lo else (lo, lo + 1.0)
+
+
+def thickness_colours(values, counted, low, high, minimum=None, maximum=None):
+    """(N, 3) colours of (N,) values: viridis over low..high, the counted points below minimum
+    red and above maximum magenta (the thin and thick regions: every such point is in one),
+    the points left out (counted False) grey."""
+    values = np.asarray(values, dtype=np.float64)
+    counted = np.asarray(counted, dtype=bool)
+    rgb = colors_of(values, low, high).astype(np.float64)
+    rgb[~counted] = EXCLUDED_COLOUR
+    if minimum:
+        rgb[counted & (values < minimum)] = THIN_COLOUR
+    if maximum:
+        rgb[counted & (values > maximum)] = THICK_COLOUR
     return rgb
+
+
+def colours_for(obj, result):
+    """(N, 3) colours of a ThicknessResult with obj's legend range and walls."""
+    st = result.statistics
+    lo, hi = legend_range(obj, st["min"] or 0.0, st["max"] or 1.0)
+    s = result.settings
+    return thickness_colours(result.values, result.counted, lo, hi, s["min"], s["max"])
+
+
+def recolour(obj):
+    """Colours from the stored Values and Counted for the current legend range, no analysis."""
+    if "Counted" not in obj.PropertiesList or not obj.Values or len(obj.Counted) != len(obj.Values):
+        return  # still being built, or nothing analysed
+    lo, hi = legend_range(obj)
+    rgb = thickness_colours(obj.Values, obj.Counted, lo, hi, float(obj.MinWall.Value) or None,
+                            float(obj.MaxWall.Value) or None)
+    obj.ThicknessColors = [tuple(c) for c in rgb.tolist()]
 
 
 def store_result(obj, result):

@@ -11,23 +11,25 @@ OBJECT_NAME = "cadmedial_radius_legend"
 
 
 class RadiusLegend(QtWidgets.QFrame):
-    """A vertical viridis bar, small radius at the bottom, with TICKS radius ticks in mm beside it
+    """A vertical viridis bar, small value at the bottom, with TICKS ticks in mm beside it
     (one object) and one line per object: "<label>: <min> – <max> mm". Keeps itself in the
-    bottom-left corner of its parent, clear of FreeCAD's axis triad (bottom right) and
-    navigation cube (top right)."""
+    bottom-left corner of its parent (or the top-left: ``top=True``), clear of FreeCAD's axis
+    triad (bottom right) and navigation cube (top right). The wall thickness legend is this
+    widget with its own title and object name (thickness_legend.py)."""
 
     BAR_WIDTH, BAR_HEIGHT, MARGIN, TICKS = 16, 120, 12, 5
 
-    def __init__(self, parent):
+    def __init__(self, parent, title="Medial radius", name=OBJECT_NAME, top=False):
         super().__init__(parent)
-        self.setObjectName(OBJECT_NAME)
+        self.top = top
+        self.setObjectName(name)
         self.setAttribute(QtCore.Qt.WA_TransparentForMouseEvents)
         self.setStyleSheet("#%s { background: rgba(255, 255, 255, 215); border-radius: 6px; }"
-                           " QLabel { color: #202020; }" % OBJECT_NAME)
+                           " QLabel { color: #202020; }" % name)
         self.bar = QtWidgets.QLabel(self)
         self.bar.setFixedSize(self.BAR_WIDTH, self.BAR_HEIGHT)
         self.bar.setPixmap(self._bar_pixmap())
-        self.title = QtWidgets.QLabel("<b>Medial radius</b>", self)
+        self.title = QtWidgets.QLabel("<b>%s</b>" % title, self)
         self.scale = QtWidgets.QWidget(self)  # tick labels, top = high, placed by hand
         self.scale.setFixedHeight(self.BAR_HEIGHT)
         self.ticks = [QtWidgets.QLabel(self.scale) for _ in range(self.TICKS)]
@@ -54,8 +56,9 @@ class RadiusLegend(QtWidgets.QFrame):
         painter.end()
         return pixmap
 
-    def set_entries(self, entries):
-        """entries: list of (label, low, high); the bar spans each object's own range."""
+    def set_entries(self, entries, notes=""):
+        """entries: list of (label, low, high); the bar spans each object's own range. notes:
+        rich text shown under the lines (the thickness legend's colour key)."""
         if not entries:
             self.hide()
             return
@@ -72,7 +75,8 @@ class RadiusLegend(QtWidgets.QFrame):
             tick.move(0, max(0, min(self.BAR_HEIGHT - tick.height(), y)))
             width = max(width, tick.width())
         self.scale.setFixedWidth(width)
-        self.lines.setText("<br>".join("%s: %.4g – %.4g mm" % entry for entry in entries))
+        self.lines.setText("<br>".join(["%s: %.4g – %.4g mm" % entry for entry in entries]
+                                       + ([notes] if notes else [])))
         self.adjustSize()
         self._place()
         self.show()
@@ -84,7 +88,8 @@ class RadiusLegend(QtWidgets.QFrame):
 
     def _place(self):
         parent = self.parentWidget()
-        self.move(self.MARGIN, parent.height() - self.height() - self.MARGIN)
+        y = self.MARGIN if self.top else parent.height() - self.height() - self.MARGIN
+        self.move(self.MARGIN, y)
 
     def eventFilter(self, watched, event):
         if event.type() == QtCore.QEvent.Resize:
@@ -113,13 +118,19 @@ def _view_widgets(doc):
     return widgets
 
 
-def legend_of(widget):
-    """The legend on a 3D view's graphics widget, or None (also when PySide's wrapper outlived
-    the widget, as it can while a document closes and another opens)."""
+def legend_of(widget, name=OBJECT_NAME):
+    """The legend (by object name) on a 3D view's graphics widget, or None (also when PySide's
+    wrapper outlived the widget, as it can while a document closes and another opens)."""
     try:
-        return widget.findChild(QtWidgets.QFrame, OBJECT_NAME)
+        return widget.findChild(QtWidgets.QFrame, name)
     except RuntimeError:
         return None
+
+
+def first_legend(doc, name=OBJECT_NAME):
+    """The legend named ``name`` over doc's first 3D view that has one, or None."""
+    return next((f for f in (legend_of(w, name) for w in _view_widgets(doc)) if f is not None),
+                None)
 
 
 def refresh(doc, leaving=None):
@@ -133,16 +144,22 @@ def refresh(doc, leaving=None):
         if obj.ViewObject is None or not obj.ViewObject.Visibility:
             continue
         entries.append((obj.Label, obj.RadiusMin.Value, obj.RadiusMax.Value))
-    widgets = _view_widgets(doc)
+    return show_on_views(doc, entries, RadiusLegend)
+
+
+def show_on_views(doc, entries, make, name=OBJECT_NAME, notes=""):
+    """Puts entries (see RadiusLegend.set_entries) in the legend named ``name`` over each 3D view
+    of doc, made by make(widget) where there is none yet; hides it when entries is empty.
+    Returns whether a legend shows."""
     shown = False
-    for widget in widgets:
-        legend = legend_of(widget)
+    for widget in _view_widgets(doc):
+        legend = legend_of(widget, name)
         try:
             if legend is None:
                 if not entries:
                     continue
-                legend = RadiusLegend(widget)
-            legend.set_entries(entries)
+                legend = make(widget)
+            legend.set_entries(entries, notes)
             shown = True
         except RuntimeError:  # the widget was deleted under its PySide wrapper
             continue

@@ -23,14 +23,15 @@ def _table(head, rows):
     return "\n".join(out)
 
 
-def report_html(result, title):
-    """The report as a str (the picture inline as a PNG data URI)."""
+def report_html(result, title, png=None):
+    """The report as a str (the picture inline as a PNG data URI). png: the picture's PNG bytes
+    (FreeCAD's GUI passes its 3D view); default a matplotlib picture of the mesh."""
     s, st = result.settings, result.statistics
     low = s["min"] if s["min"] is not None else (st["min"] or 0.0)
     high = s["max"] if s["max"] is not None else (st["max"] or 1.0)
     if not high > low:
         high = low + 1.0
-    png = base64.b64encode(render_png(result, low, high)).decode("ascii")
+    png = base64.b64encode(render_png(result, low, high) if png is None else png).decode("ascii")
     verdict = "PASS" if result.passed else "FAIL"
     settings = _table(["setting", "value"], [
         ["minimum wall", _num(s["min"])], ["maximum wall", _num(s["max"])],
@@ -81,8 +82,8 @@ from the medial axis (cadmedial). Thin regions red, thick magenta.</p>
            more=", first %d" % MAX_FACE_ROWS if len(faces) > MAX_FACE_ROWS else "")
 
 
-def write_report(result, path, title):
-    text = report_html(result, title)
+def write_report(result, path, title, png=None):
+    text = report_html(result, title, png)
 
     def write(tmp):
         with open(tmp, "w", encoding="utf-8") as f:
