@@ -1,10 +1,13 @@
-"""batch(stop=..., on_progress=...): the hooks the FreeCAD dialog drives. A stop ends the run early
-(a part that would run for 5 minutes is killed with the local cluster), the unfinished parts are
-recorded "stopped", and the finished ones keep their outputs."""
+"""batch(stop=..., on_progress=...) and cadmedial.batch.pipe, the hooks the FreeCAD dialog drives.
+A stop ends the run early (a part that would run for 5 minutes is killed with the local cluster),
+the unfinished parts are recorded "stopped", and the finished ones keep their outputs."""
 
 import csv
+import json
 import os
 import shutil
+import subprocess
+import sys
 import threading
 import time
 
@@ -113,3 +116,44 @@ def wait_for(path, seconds=60):
         if time.monotonic() > end:
             return
         time.sleep(0.05)
+
+
+def test_the_pipe_reports_updates_and_stops_on_a_line(tmp_path, cli):
+    # cadmedial.batch.pipe, as the FreeCAD dialog drives it: JSON lines out, "stop" in.
+    folder = tmp_path / "in"
+    folder.mkdir()
+    shutil.copy(os.path.join(DATA, "box_10x20x30.step"), folder / "box.step")
+    shutil.copy(os.path.join(DATA, "box_10x20x30.brep"), folder / "hang.brep")
+    request = {"inputs": [str(folder)], "out_dir": str(tmp_path / "out"),
+               "options": {"jobs": 1, "samples": SAMPLES, "timeout": 0, "cli": hanging_cli(tmp_path, cli)}}
+    child = subprocess.Popen([sys.executable, "-m", "cadmedial.batch.pipe"], stdin=subprocess.PIPE,
+                             stdout=subprocess.PIPE, text=True)
+    child.stdin.write(json.dumps(request) + "\n")
+    child.stdin.flush()
+    messages = []
+    for line in child.stdout:
+        messages.append(json.loads(line))
+        update = messages[-1].get("update")
+        if update and update[3] and update[3]["part"] == "in/box.step":
+            wait_for(tmp_path / "hang.pid")
+            child.stdin.write("stop\n")
+            child.stdin.flush()
+    assert child.wait(timeout=120) == 0
+    result = messages[-1]["result"]
+    assert result["counts"] == {"ok": 1, "stopped": 1}
+    assert [m["update"][:3] for m in messages if "update" in m and m["update"][3]] == [[1, 0, 2]]
+    # The hanging part's process went with the child's cluster.
+    pid = int((tmp_path / "hang.pid").read_text())
+    for _ in range(100):
+        if not alive(pid):
+            break
+        time.sleep(0.1)
+    assert not alive(pid)
+
+
+def test_the_pipe_says_a_bad_argument_in_one_line(tmp_path):
+    child = subprocess.run([sys.executable, "-m", "cadmedial.batch.pipe"], capture_output=True, text=True,
+                           input=json.dumps({"inputs": [str(tmp_path / "missing.step")],
+                                             "out_dir": str(tmp_path / "out"), "options": {}}) + "\n")
+    assert child.returncode == 2
+    assert "missing.step" in json.loads(child.stdout.splitlines()[-1])["error"]
