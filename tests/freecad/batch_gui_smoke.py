@@ -4,10 +4,12 @@
 # then reads the summary table, double-clicks a row and saves a picture of the dialog; last, a
 # batch of two slow parts stopped a few seconds in.
 # Writes $CADMEDIAL_GUI_OUT/batch.json and batch.png; exits with os._exit.
+import gc
 import json
 import multiprocessing.spawn
 import os
 import shutil
+import subprocess
 import time
 import traceback
 
@@ -22,7 +24,8 @@ report = {}
 
 
 class Heartbeat:
-    """The longest gap between ticks of a 10 ms timer since reset(), in ms."""
+    """The longest gap between ticks of a 10 ms timer since reset(), in ms; and the full garbage
+    collections meanwhile (FreeCAD's heap is large: each holds the GIL, so the GUI, a while)."""
 
     def __init__(self):
         self.timer = QtCore.QTimer()
@@ -30,11 +33,22 @@ class Heartbeat:
         self.timer.timeout.connect(self._tick)
         self.reset()
         self.timer.start()
+        gc.callbacks.append(self._collected)
 
     def reset(self):
         self.last = self.start = time.monotonic()
         self.longest = 0.0
         self.gaps = []  # (seconds since reset, gap ms) of the gaps over 50 ms
+        self.collections = []  # (seconds since reset, ms) of each full garbage collection
+
+    def _collected(self, phase, info):
+        if info["generation"] != 2:
+            return
+        if phase == "start":
+            self._gc_start = time.monotonic()
+        else:
+            self.collections.append((round(self._gc_start - self.start, 2),
+                                     round(1000.0 * (time.monotonic() - self._gc_start), 1)))
 
     def _tick(self):
         now = time.monotonic()
@@ -47,6 +61,37 @@ class Heartbeat:
     def gap(self):
         self._tick()
         return round(self.longest, 1)
+
+
+# The same 10 ms tick in a plain Python process beside FreeCAD, at its priority: the gaps it sees
+# are the machine's (other jobs on its cores), not the GUI's. It prints its longest gap since the
+# last line it read on stdin.
+_OTHER = """
+import sys, threading, time
+longest, last = [0.0], [time.monotonic()]
+def tick():
+    while True:
+        time.sleep(0.01)
+        now = time.monotonic()
+        longest[0] = max(longest[0], 1000.0 * (now - last[0]))
+        last[0] = now
+threading.Thread(target=tick, daemon=True).start()
+for line in sys.stdin:
+    print(round(longest[0], 1), flush=True)
+    longest[0] = 0.0
+"""
+
+
+class MachineBeat:
+    def __init__(self):
+        self.child = subprocess.Popen(["/usr/bin/python3", "-c", _OTHER], stdin=subprocess.PIPE,
+                                      stdout=subprocess.PIPE, text=True)
+
+    def gap(self):
+        # Read at a phase's start (resets it) and end; the value is the phase's longest gap.
+        self.child.stdin.write("\n")
+        self.child.stdin.flush()
+        return float(self.child.stdout.readline())
 
 
 def spin(condition, seconds):
@@ -80,9 +125,12 @@ def run():
     make_parts(folder)
 
     beat = Heartbeat()
+    machine = MachineBeat()
+    machine.gap()
     end = time.monotonic() + 3.0  # the same wait with nothing running: the machine's own stalls
     spin(lambda: time.monotonic() > end, 10)
     report["idle_stall_ms"] = beat.gap()
+    report["idle_machine_ms"] = machine.gap()
     Gui.runCommand("MedialAxis_Batch")
     dialog = batch_command.dialog
     report["dialog_visible"] = dialog.isVisible()
@@ -92,6 +140,7 @@ def run():
     dialog.samples.setValue(3000)
     spin(lambda: True, 0.5)
     beat.reset()
+    machine.gap()
     started = time.monotonic()
     dialog.start_button.click()
     report["running_after_click"] = dialog.running
@@ -103,7 +152,9 @@ def run():
     end = time.monotonic() + 1.0  # the table filling and the cluster's last messages
     spin(lambda: time.monotonic() > end, 10)
     report["stall_ms"] = beat.gap()
+    report["machine_ms"] = machine.gap()
     report["gaps"] = beat.gaps
+    report["collections"] = beat.collections
     report["spawn_executable"] = os.fsdecode(multiprocessing.spawn.get_executable())
     report["status_text"] = dialog.status.text()
     report["headers"] = [c[0] for c in COLUMNS]
@@ -125,6 +176,8 @@ def run():
     opened = [App.getDocument(n) for n in App.listDocuments() if n not in before]
     report["opened"] = [sorted(o.TypeId for o in d.Objects) for d in opened]
     report["opened_faces"] = [o.Mesh.CountFacets for d in opened for o in d.Objects if o.TypeId == "Mesh::Feature"]
+    for d in opened:  # its 3D view, drawn by software OpenGL here, would be in the next phase's stalls
+        App.closeDocument(d.Name)
 
     dialog.raise_()
     dialog.activateWindow()
@@ -140,6 +193,7 @@ def run():
     dialog.jobs.setValue(1)
     dialog.samples.setValue(400000)
     beat.reset()
+    machine.gap()
     dialog.start_button.click()
     end = time.monotonic() + 4.0
     spin(lambda: time.monotonic() > end, 10)
@@ -149,7 +203,9 @@ def run():
     spin(lambda: not dialog.running, 300)
     report["stop_seconds"] = round(time.monotonic() - stopped_at, 2)
     report["stop_stall_ms"] = beat.gap()
+    report["stop_machine_ms"] = machine.gap()
     report["stop_gaps"] = beat.gaps
+    report["stop_collections"] = beat.collections
     report["stopped_rows"] = rows_shown(dialog.table)
 
 

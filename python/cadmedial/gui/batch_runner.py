@@ -11,6 +11,7 @@ receives signals; the thread only waits on a pipe.
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -21,6 +22,7 @@ from PySide2 import QtCore
 from cadmedial.batch.progress import Update
 from cadmedial.batch.run import BatchResult
 
+NICE = 5  # the batch's processes below FreeCAD's priority: on a laptop's few cores the GUI comes first
 _PACKAGE_ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
@@ -32,6 +34,11 @@ def python_program():
         if os.access(python, os.X_OK):
             return python
     return "python3"
+
+
+def _command():
+    nice = shutil.which("nice")
+    return ([nice, "-n", str(NICE)] if nice else []) + [python_program(), "-m", "cadmedial.batch.pipe"]
 
 
 def _child_environment():
@@ -91,7 +98,7 @@ class BatchRunner(QtCore.QObject):
             try:
                 with self._lock:
                     self._process = subprocess.Popen(
-                        [python_program(), "-m", "cadmedial.batch.pipe"], stdin=subprocess.PIPE,
+                        _command(), stdin=subprocess.PIPE,
                         stdout=subprocess.PIPE, stderr=log, text=True, env=_child_environment())
                     self._tell_child(json.dumps(self.request) + "\n")
                     if self._stop.is_set():
