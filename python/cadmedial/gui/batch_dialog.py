@@ -11,6 +11,7 @@ from cadmedial.batch.discover import CAD_SUFFIXES, LIST_SUFFIXES
 from .batch_runner import BatchRunner
 from .batch_table import SortProxy, SummaryModel
 
+MAX_COLUMN_WIDTH = 260  # pixels; a cell's whole text is in its tooltip (parts, messages)
 OUTPUT_NAME = "medial_axis"  # the default output folder, beside (in) the input folder
 _FILTER = "CAD files and lists (%s)" % " ".join("*" + s for s in CAD_SUFFIXES + LIST_SUFFIXES)
 
@@ -87,6 +88,7 @@ class BatchDialog(QtWidgets.QDialog):
         self.table.setSelectionBehavior(QtWidgets.QAbstractItemView.SelectRows)
         self.table.setEditTriggers(QtWidgets.QAbstractItemView.NoEditTriggers)
         self.table.horizontalHeader().setStretchLastSection(True)
+        self.table.setTextElideMode(QtCore.Qt.ElideLeft)  # the reason is at a message's end
         self.table.doubleClicked.connect(self._open_row)
 
         self.start_button = QtWidgets.QPushButton("Start")
@@ -108,7 +110,7 @@ class BatchDialog(QtWidgets.QDialog):
         layout.addWidget(self.status)
         layout.addWidget(self.table, 1)
         layout.addLayout(buttons)
-        self.resize(1000, 700)
+        self.resize(1100, 700)
         self._set_running(False)
 
     @staticmethod
@@ -178,6 +180,8 @@ class BatchDialog(QtWidgets.QDialog):
         self.result = result
         self.model.set_records(result.records)
         self.table.resizeColumnsToContents()
+        for column in range(self.model.columnCount()):  # a long message must not hide the numbers
+            self.table.setColumnWidth(column, min(self.table.columnWidth(column), MAX_COLUMN_WIDTH))
         self.bar.setRange(0, max(1, len(result.records)))
         self.bar.setValue(sum(1 for r in result.records if r["status"] != "stopped"))
         self._say(result.text.replace("\n", "<br>"))
