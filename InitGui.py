@@ -22,7 +22,7 @@ class MedialAxisWorkbench(FreeCADGui.Workbench):
         # Another module's commands register themselves (cadmedial.gui.commands.register) and
         # are listed here.
         commands = ["MedialAxis_Create", "MedialAxis_Export", "MedialAxis_MakeShape",
-                    "MedialAxis_ThinnestWall", "MedialAxis_WallThickness"]
+                    "MedialAxis_ThinnestWall", "MedialAxis_WallThickness", "MedialAxis_Batch"]
         self.appendToolbar("Medial Axis", commands)
         self.appendMenu("&Medial Axis", commands)
 

@@ -8,7 +8,9 @@
 #              built first if the module is missing (cmake -S . -B DIR && cmake --build DIR -j2)
 # --dest       the addon folder to (re)create (default: $HOME/.local/share/FreeCAD/Mod/MedialAxis)
 #
-# Layout made: Init.py InitGui.py package.xml Resources/icons/ cadmedial/ (with _core*.so).
+# Layout made: Init.py InitGui.py package.xml Resources/icons/ cadmedial/ (with _core*.so), and
+# bin/cadmedial, the program the batch dialog's workers run on each part, with lib/cadmedial/python
+# pointing back at the addon (where the program looks for the package of `cadmedial thickness`).
 set -euo pipefail
 
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -24,10 +26,10 @@ while [ $# -gt 0 ]; do
 done
 
 module() { find "$build/python/cadmedial" -maxdepth 1 -name '_core*.so' 2>/dev/null | head -n 1; }
-if [ -z "$(module)" ]; then
-  echo "Building the module in $build ..."
+if [ -z "$(module)" ] || [ ! -x "$build/cadmedial" ]; then
+  echo "Building the module and the program in $build ..."
   cmake -S "$repo" -B "$build" >/dev/null
-  cmake --build "$build" -j2 --target _core
+  cmake --build "$build" -j2 --target _core cadmedial
 fi
 so=$(module)
 if [ -z "$so" ]; then
@@ -43,4 +45,7 @@ cp "$repo"/Resources/icons/*.svg "$dest/Resources/icons/"
 (cd "$repo/python" && find cadmedial \( -name '*.py' -o -name '*.pyi' -o -name 'py.typed' \) -print0 |
   xargs -0 -I{} install -D -m 644 {} "$dest/{}")
 install -m 755 "$so" "$dest/cadmedial/"
+install -D -m 755 "$build/cadmedial" "$dest/bin/cadmedial"
+mkdir -p "$dest/lib/cadmedial"
+ln -s ../.. "$dest/lib/cadmedial/python"
 echo "Installed the MedialAxis addon in $dest"

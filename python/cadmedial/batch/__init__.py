@@ -10,7 +10,7 @@ docs/batch.md is the user's page. One job per file: discover (inputs), limits (a
 under a time and memory limit), task (one part), status (its status and summary columns),
 outputs (layout, atomic writes), resume, summary, client (Dask), progress, analyses (the
 --thickness hook), fcstd (FreeCAD documents), programs (finding the cadmedial program), run
-(batch()), __main__ (the command line).
+(batch()), pipe (batch() driven through pipes: the FreeCAD dialog), __main__ (the command line).
 """
 
 import sys as _sys

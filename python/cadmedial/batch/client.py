@@ -5,6 +5,7 @@ import contextlib
 import importlib.util
 import logging
 import os
+import sys
 
 from .._core import InvalidInput
 
@@ -20,6 +21,19 @@ def _export_package_path():
         os.environ["PYTHONPATH"] = os.pathsep.join([_PACKAGE_ROOT] + [p for p in paths if p])
     import cadmedial._core as core
     os.environ.setdefault("CADMEDIAL_CORE_DIR", os.path.dirname(os.path.abspath(core.__file__)))
+
+
+def _spawn_with_python():
+    """Local workers are started as `sys.executable -c ...` (multiprocessing's spawn). Inside
+    FreeCAD sys.executable is the freecad program, which would open a FreeCAD per worker: spawn
+    them with the Python FreeCAD embeds, of this very version (the compiled module is built for it)."""
+    import multiprocessing
+    if os.path.basename(sys.executable or "").startswith("python"):
+        return
+    for python in ("/usr/bin/python%d.%d" % sys.version_info[:2], "/usr/bin/python3"):
+        if os.access(python, os.X_OK):
+            multiprocessing.set_executable(python)
+            return
 
 
 def dashboard_link(client):
@@ -51,6 +65,7 @@ def dask_client(client=None, scheduler=None, jobs=None):
             c.close()
         return
     _export_package_path()
+    _spawn_with_python()
     n = jobs or os.cpu_count() or 1
     # One thread per worker: a task only waits for its part's child process, and a worker per
     # core runs as many parts at once as there are cores. No dashboard without bokeh (above).

@@ -15,7 +15,9 @@ def _candidates():
     yield os.path.normpath(os.path.join(_PACKAGE, os.pardir, os.pardir, os.pardir, os.pardir, "bin", "cadmedial"))
     # 3. A source checkout: <repo>/python/cadmedial -> <repo>/build/cadmedial.
     yield os.path.normpath(os.path.join(_PACKAGE, os.pardir, os.pardir, "build", "cadmedial"))
-    # 4. Whatever PATH offers.
+    # 4. The FreeCAD addon (tools/install_addon.sh): Mod/MedialAxis/cadmedial -> Mod/MedialAxis/bin.
+    yield os.path.join(os.path.dirname(_PACKAGE), "bin", "cadmedial")
+    # 5. Whatever PATH offers.
     yield shutil.which("cadmedial") or ""
 
 

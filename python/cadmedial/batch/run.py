@@ -13,6 +13,7 @@ from .client import dask_client, dashboard_link
 from .discover import discover
 from .progress import Progress
 from .programs import find_cli
+from .status import STOPPED_MESSAGE
 from .task import TaskOptions, run_part
 
 FORMATS = ("ply", "obj", "ma")
@@ -68,7 +69,7 @@ def _limit(name, value, scale):
 def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAULT_TIMEOUT,
           memory=DEFAULT_MEMORY, force=False, format="ply", spacing=None, samples=None, theta=None,
           rho=None, refine=False, uniform=False, plain_medial=False, thickness=None, cli=None,
-          progress=True):
+          progress=True, on_progress=None, stop=None):
     """Computes the medial axis of every part of ``inputs`` into ``out_dir``, on Dask.
 
     inputs     a path or a list of them: CAD files (STEP, IGES, BREP, FCStd), folders (searched
@@ -89,6 +90,12 @@ def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAU
                on each part; refused while cadmedial.thickness does not exist
     cli        the cadmedial program to run (default: found as programs.find_cli says)
     progress   print progress and the text summary on stderr
+    on_progress
+               None, or a function called with a progress.Update after each part and with each
+               line of progress (in the thread that runs batch(): a GUI hands it on to its own)
+    stop       None, or a threading.Event (or a function returning True) that stops the batch:
+               checked every 0.1 s; the parts not finished are cancelled (a local cluster's
+               running ones killed with it) and recorded "stopped", finished ones are kept
 
     Returns a BatchResult; writes OUTDIR/summary.csv and summary.json. A part that fails is a
     record with its status and message, never an exception; InvalidInput is raised for bad
@@ -101,6 +108,7 @@ def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAU
         raise InvalidInput("jobs must be a whole number >= 1, got %r" % (jobs,))
     if scheduler and client is not None:
         raise InvalidInput("give a client or a scheduler address, not both")
+    stopped = _stop_test(stop)
     extra = ()
     if thickness is not None:
         extra = (analyses.Analysis("thickness", dict(thickness)),)
@@ -118,7 +126,7 @@ def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAU
     if not os.access(out_dir, os.W_OK | os.X_OK):
         raise InvalidInput("%s: the output folder is not writable" % out_dir)
 
-    report = Progress(len(parts), enabled=progress)
+    report = Progress(len(parts), enabled=progress, listener=on_progress)
     records, todo = [], []
     for part in parts:
         done = None if force else resume.finished_record(part, out_dir, format, options.key())
@@ -126,11 +134,13 @@ def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAU
             records.append(dict(done, resumed=True))
         else:
             todo.append(part)
+    report.resumed(len(records))
     if records:
         report.say("%d of %d parts done before (outputs newer than their input): skipped; --force redoes them"
                    % (len(records), len(parts)))
     if todo:
-        records += _run(todo, out_dir, options, client, scheduler, jobs, report, columns)
+        finished = _run(todo, out_dir, options, client, scheduler, jobs, report, columns, stopped)
+        records += finished + _unfinished(todo, finished, out_dir, options)
     records.sort(key=lambda r: r["part"])
     summary.write(out_dir, records, columns)
     seconds = time.monotonic() - start
@@ -140,12 +150,41 @@ def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAU
     return BatchResult(records, summary.counts(records), seconds, text)
 
 
-def _run(parts, out_dir, options, client, scheduler, jobs, report, columns):
-    """Records of ``parts`` run on Dask, in the order they finish."""
+def _stop_test(stop):
+    """A function saying whether to stop, from an Event, a function or None."""
+    if stop is None:
+        return lambda: False
+    if hasattr(stop, "is_set"):
+        return stop.is_set
+    if callable(stop):
+        return lambda: bool(stop())
+    raise InvalidInput("stop must be a threading.Event or a function, got %r" % (stop,))
+
+
+def _unfinished(parts, finished, out_dir, options):
+    """Records of the parts of a stopped batch that have none: "stopped", unless the part's own
+    record says it finished meanwhile (it ended as the batch stopped)."""
+    have = {r["part"] for r in finished}
+    records = []
+    for part in parts:
+        if part.name in have:
+            continue
+        done = resume.finished_record(part, out_dir, options.fmt, options.key())
+        records.append(done if done is not None else {
+            "part": part.name, "input": part.path, "status": "stopped", "message": STOPPED_MESSAGE,
+            "time_s": None, "peak_memory_mb": None, "options": options.key()})
+    return records
+
+
+def _run(parts, out_dir, options, client, scheduler, jobs, report, columns, stopped):
+    """Records of ``parts`` run on Dask, in the order they finish; fewer when ``stopped()``
+    turns True (the others are cancelled)."""
     from distributed import as_completed
     # The biggest files first (priority): the longest parts should not be the last to start.
     order = sorted(range(len(parts)), key=lambda i: -os.path.getsize(parts[i].path))
     records = []
+    if stopped():
+        return records
     with dask_client(client, scheduler, jobs) as c:
         link = dashboard_link(c)
         report.say("%d parts on %d workers (%s)%s" % (
@@ -158,7 +197,17 @@ def _run(parts, out_dir, options, client, scheduler, jobs, report, columns):
                          key="cadmedial-part-%d-%s" % (i, os.urandom(4).hex()))
             futures[f] = parts[i]
         try:
-            for f in as_completed(futures):
+            pending = as_completed(futures)
+            while not pending.is_empty():
+                if stopped():
+                    c.cancel(list(futures))
+                    report.say("stopped: %d of %d parts finished, the others cancelled" % (
+                        len(records), len(parts)))
+                    break
+                if not pending.has_ready():
+                    time.sleep(0.1)  # how soon a stop is seen
+                    continue
+                f = next(pending)
                 part = futures[f]
                 try:
                     record = f.result()

@@ -5,7 +5,9 @@ import re
 import signal
 
 # Statuses, in the order the text summary lists them.
-STATUSES = ("ok", "refused", "error", "out_of_memory", "timeout", "crashed", "lost")
+STATUSES = ("ok", "refused", "error", "out_of_memory", "timeout", "crashed", "lost", "stopped")
+# The message of a part the batch did not finish because it was stopped (batch(stop=...)).
+STOPPED_MESSAGE = "not done: the batch was stopped"
 
 # What running out of an address-space limit looks like from inside the engine: bad_alloc (main.cpp
 # says "out of memory"), or a thread that cannot get its stack (std::system_error EAGAIN,

@@ -1,8 +1,9 @@
 """The workbench GUI: commands, task panel, view provider, radius legend. Imports FreeCADGui.
 
 Importing this package registers the commands (MedialAxis_Create, MedialAxis_Export,
-MedialAxis_MakeShape) and plugs the view providers into cadmedial.app, so that
-cadmedial.app.make_medial_axis() in the Python console gets the coloured view too.
+MedialAxis_MakeShape, MedialAxis_WallThickness, MedialAxis_Batch) and plugs the view providers
+into cadmedial.app, so that cadmedial.app.make_medial_axis() in the Python console gets the
+coloured view too.
 """
 
 from cadmedial.app import registry, view_provider_factories
@@ -19,5 +20,7 @@ commands.register()
 picking.install()
 from . import thickness_command  # noqa: E402
 thickness_command.register()
+from . import batch_command  # noqa: E402
+batch_command.register()
 
 __all__ = ["ViewProviderMedialAxis", "ViewProviderMedialShape", "commands"]
