@@ -277,9 +277,8 @@ def run():
     settle(1.0)
     view.saveImage(os.path.join(OUT, "reopened.png"), 800, 600, "White")
     report["reopened_coloured_pixels_sampled"] = coloured_pixels(os.path.join(OUT, "reopened.png"))
-    views = legend._view_widgets(doc)
-    # The first widget can be the closed document's stale wrapper: read the first legend found.
-    shown = next((f for f in map(legend.legend_of, views) if f is not None), None)
+    # The closed document's view can still be listed: read the legend of a visible view.
+    shown = legend.first_legend(doc)
     report["reopened_legend"] = shown.text() if shown is not None and shown.isVisible() else None
     QtGui.QGuiApplication.primaryScreen().grabWindow(0).save(os.path.join(OUT, "reopened_workbench.png"))
     report["steps"].append("done")

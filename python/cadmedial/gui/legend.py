@@ -128,9 +128,18 @@ def legend_of(widget, name=OBJECT_NAME):
 
 
 def first_legend(doc, name=OBJECT_NAME):
-    """The legend named ``name`` over doc's first 3D view that has one, or None."""
-    return next((f for f in (legend_of(w, name) for w in _view_widgets(doc)) if f is not None),
-                None)
+    """The legend named ``name`` over doc's first 3D view that has one (a visible view's first),
+    or None."""
+    found = [f for f in (legend_of(w, name) for w in _view_widgets(doc)) if f is not None]
+    visible = [f for f in found if _visible(f)]
+    return (visible or found or [None])[0]
+
+
+def _visible(widget):
+    try:
+        return widget.isVisible()
+    except RuntimeError:
+        return False
 
 
 def refresh(doc, leaving=None):
@@ -150,7 +159,9 @@ def refresh(doc, leaving=None):
 def show_on_views(doc, entries, make, name=OBJECT_NAME, notes=""):
     """Puts entries (see RadiusLegend.set_entries) in the legend named ``name`` over each 3D view
     of doc, made by make(widget) where there is none yet; hides it when entries is empty.
-    Returns whether a legend shows."""
+    Returns whether a legend shows on a view the user sees: while a document closes and another
+    opens, the closing one's view can still be listed (its wrapper alive, its window hidden), and
+    a legend put only there is lost with it, so the callers try again."""
     shown = False
     for widget in _view_widgets(doc):
         legend = legend_of(widget, name)
@@ -160,7 +171,7 @@ def show_on_views(doc, entries, make, name=OBJECT_NAME, notes=""):
                     continue
                 legend = make(widget)
             legend.set_entries(entries, notes)
-            shown = True
+            shown = shown or widget.isVisible()
         except RuntimeError:  # the widget was deleted under its PySide wrapper
             continue
     return shown and bool(entries)
