@@ -203,9 +203,10 @@ def topology_cell(r):
         return "-"
     bad = [t for t in topo if t["components"] != 1 or t["euler"] != t["expected"]]
     if not bad and not r.get("topology_extra_solids"):
-        return "%d solid%s: 1 piece, χ %s" % (len(topo), "s" if len(topo) > 1 else "",
-                                             "/".join(str(t["expected"]) for t in topo)
-                                             if len(topo) <= 3 else "right")
+        if len(topo) == 1:
+            return "1 piece, χ %s" % topo[0]["expected"]
+        return "%d solids, each 1 piece, χ %s" % (
+            len(topo), "/".join(str(t["expected"]) for t in topo) if len(topo) <= 3 else "right")
     cells = ["s%d: %d pieces, χ %s (want %s)" % (t["solid"], t["components"], t["euler"], t["expected"])
              for t in bad[:3]]
     if len(bad) > 3:
@@ -243,31 +244,41 @@ def main():
     ap.add_argument("--timeout", type=float, default=120.0)
     ap.add_argument("--jobs", type=int, default=1)
     ap.add_argument("--one", type=int, help=argparse.SUPPRESS)
+    ap.add_argument("--report", action="store_true", help="only write OUT/hard_eval.md again from OUT/hard_eval.json")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     if a.one is not None:
         one(a.one, a.build, a.out, a.timeout)
         return
+    if a.report:
+        saved = json.load(open(os.path.join(a.out, "hard_eval.json")))
+        write_page(saved["run"], saved["records"], a.out)
+        return
     import hard_parts
     seeds = hard_parts.parse_seeds(a.seeds)
     t0 = time.time()
+    git = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
     started = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
     with ThreadPoolExecutor(max(1, a.jobs)) as ex:
         recs = []
         for r in ex.map(lambda s: run_one_process(s, a), seeds):
             recs.append(r)
             print("seed %d %s: %s %s" % (r["seed"], r["family"], r["verdict"], "; ".join(r["why"])), flush=True)
-    git = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
     right = sum(r["verdict"] == "right" for r in recs)
     head = {"started": started, "wall_seconds": time.time() - t0, "git": git, "build": os.path.abspath(a.build),
             "seeds": a.seeds, "timeout": a.timeout, "jobs": a.jobs, "right": right, "total": len(recs)}
     json.dump({"run": head, "records": recs}, open(os.path.join(a.out, "hard_eval.json"), "w"), indent=1, default=float)
+    write_page(head, recs, a.out)
+    print("right %d of %d" % (right, len(recs)))
+
+
+def write_page(head, recs, out):
     md = ["# Hard generated parts, judged (bench/hard_eval.py)", "",
           "Run %s, commit %s, %s, seeds %s, time limit %g s, %d job(s), %.0f s in all." % (
-              started, git, a.build, a.seeds, a.timeout, a.jobs, head["wall_seconds"]), "",
-          "Right: %d of %d." % (right, len(recs)), "", table(recs), ""]
-    open(os.path.join(a.out, "hard_eval.md"), "w").write("\n".join(md))
-    print("right %d of %d" % (right, len(recs)))
+              head["started"], head["git"], head["build"], head["seeds"], head["timeout"], head["jobs"],
+              head["wall_seconds"]), "",
+          "Right: %d of %d." % (head["right"], head["total"]), "", table(recs), ""]
+    open(os.path.join(out, "hard_eval.md"), "w").write("\n".join(md))
 
 
 if __name__ == "__main__":
