@@ -207,7 +207,8 @@ def topology_cell(r):
             return "1 piece, χ %s" % topo[0]["expected"]
         return "%d solids, each 1 piece, χ %s" % (
             len(topo), "/".join(str(t["expected"]) for t in topo) if len(topo) <= 3 else "right")
-    cells = ["s%d: %d pieces, χ %s (want %s)" % (t["solid"], t["components"], t["euler"], t["expected"])
+    cells = ["s%d: %d piece%s, χ %s (want %s)" % (t["solid"], t["components"], "" if t["components"] == 1 else "s",
+                                                 t["euler"], t["expected"])
              for t in bad[:3]]
     if len(bad) > 3:
         cells.append("%d more" % (len(bad) - 3))
