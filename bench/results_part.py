@@ -103,6 +103,29 @@ def sewn_solids(shape):
     return Part.makeCompound(solids) if solids else None
 
 
+def completeness(dense_tree, ep, cp, length, h):
+    """How much of the convex edges (points ep along them, total length `length`) and corners cp
+    the axis reaches: a point is reached when the dense sample of the axis's faces (dense_tree,
+    a k-d tree) comes within h of it."""
+    rec = {"edge_points": int(len(ep)), "corners": int(len(cp)), "convex_edge_length": length}
+    if len(ep):
+        d = dense_tree.query(ep)[0]
+        rec["edge_reached"] = float((d <= h).mean())
+        rec["edge_max_h"] = float(d.max() / h)
+    if len(cp):
+        d = dense_tree.query(cp)[0]
+        rec["corner_reached"] = float((d <= h).mean())
+    return rec
+
+
+def topology_record(offsets, indices, face_solid, edges, edge_solid, num_vertices, solids):
+    """Per solid the axis has: its pieces and Euler characteristic (measures.topology) beside the
+    solid's own from its B-rep (measures.solid_euler)."""
+    topo = measures.topology(offsets, indices, face_solid, edges, edge_solid, num_vertices)
+    return [{"solid": s, **tp, "solid_euler": measures.solid_euler(solids[s]) if s < len(solids) else None}
+            for s, tp in topo.items()]
+
+
 def main():
     if os.environ.get("BENCH_TRACE"):
         import faulthandler
@@ -189,25 +212,13 @@ def main():
         L = None
     else:
         ep, cp, L = measures.convex_edge_points(solids, h)
-    comp_rec = {"edge_points": int(len(ep)), "corners": int(len(cp)), "convex_edge_length": L}
-    if len(ep):
-        d = dtree.query(ep)[0]
-        comp_rec["edge_reached"] = float((d <= h).mean())
-        comp_rec["edge_max_h"] = float(d.max() / h)
-    if len(cp):
-        d = dtree.query(cp)[0]
-        comp_rec["corner_reached"] = float((d <= h).mean())
-    rec["completeness"] = comp_rec
+    rec["completeness"] = completeness(dtree, ep, cp, L, h)
     tm["accuracy_completeness"] = time.time() - t
     t = time.time()
 
     if not a.light:
-        topo = measures.topology(r.faces.offsets, r.faces.indices, face_solid, r.edges, r.edge_solid, r.num_vertices)
-        per = []
-        for s, tp in topo.items():
-            es = measures.solid_euler(solids[s]) if s < len(solids) else None
-            per.append({"solid": s, **tp, "solid_euler": es})
-        rec["topology"] = per
+        rec["topology"] = topology_record(r.faces.offsets, r.faces.indices, face_solid, r.edges, r.edge_solid,
+                                          r.num_vertices, solids)
         surface = (Y, N, spacing) if N is not None and len(solids) == 1 else None
         frac, n, exact = measures.leakage(solids, V, 1e-6 * diag, surface=surface)
         rec["leakage"] = {"outside_fraction": frac, "tested": n, "classifier": exact}
