@@ -138,6 +138,20 @@ def test_other_options_redo_and_force_redoes(parts, tmp_path, client, cli):
     assert box(denser)["samples"] > 1.5 * box(first)["samples"]
 
 
+def test_the_minimum_feature_size_reaches_each_part(parts, tmp_path, client, cli):
+    # The 10-thick box at spacing 6 is sampled finer at its walls; with a minimum feature of 12
+    # it is not (test_compute): the batch hands the option on, and the warning reaches the summary.
+    out = tmp_path / "out"
+    plain = cadmedial.batch(parts, out / "plain", client=client, spacing=6.0, cli=cli, progress=False)
+    limited = cadmedial.batch(parts, out / "limited", client=client, spacing=6.0, min_feature=12.0, cli=cli,
+                              progress=False)
+    box = lambda res: next(r for r in res.records if r["part"] == "in/box_10x20x30.step")
+    assert box(limited)["status"] == "ok"
+    assert box(limited)["samples"] < box(plain)["samples"] / 2
+    with pytest.raises(cadmedial.InvalidInput):
+        cadmedial.batch(parts, out / "bad", client=client, min_feature=-1, cli=cli, progress=False)
+
+
 def faulty_cli(tmp_path, real):
     """A cadmedial program that hangs on parts named hang*, segfaults on crash*, and is the real
     one otherwise: the faults of issue 36's benchmark, on purpose."""

@@ -49,6 +49,7 @@ def parser():
     c.add_argument("--refine", action="store_true")
     c.add_argument("--uniform", action="store_true")
     c.add_argument("--plain-medial", action="store_true")
+    c.add_argument("--min-feature", type=float, metavar="F")
     t = p.add_argument_group("wall thickness (issue 34; needs the cadmedial.thickness module)")
     t.add_argument("--thickness", action="store_true", help="also analyse each part's wall thickness")
     t.add_argument("--min", type=float, metavar="T", help="minimum wall (with --thickness)")
@@ -66,6 +67,7 @@ def main(argv=None):
                        timeout=args.timeout, memory=args.memory, force=args.force, format=args.format,
                        spacing=args.spacing, samples=args.samples, theta=args.theta, rho=args.rho,
                        refine=args.refine, uniform=args.uniform, plain_medial=args.plain_medial,
+                       min_feature=args.min_feature,
                        thickness={"min": args.min, "max": args.max} if args.thickness else None,
                        progress=not args.quiet)
     except Error as e:  # InvalidInput and its kin: bad arguments or inputs

@@ -29,7 +29,7 @@ class BatchResult(NamedTuple):
 
 
 def compute_args(spacing=None, samples=None, theta=None, rho=None, refine=False, uniform=False,
-                 plain_medial=False):
+                 plain_medial=False, min_feature=None):
     """The `cadmedial compute` options for these parameters, checked here so that a typo fails
     the batch at once instead of every part."""
     args = []
@@ -50,6 +50,11 @@ def compute_args(spacing=None, samples=None, theta=None, rho=None, refine=False,
         if not rho > 0:
             raise InvalidInput("rho must be > 0, got %r" % rho)
         args += ["--rho", repr(rho)]
+    if min_feature is not None:
+        min_feature = api._number("min_feature", min_feature)
+        if not min_feature > 0:
+            raise InvalidInput("min_feature must be > 0, got %r" % min_feature)
+        args += ["--min-feature", repr(min_feature)]
     for flag, on in (("--refine", refine), ("--uniform", uniform), ("--plain-medial", plain_medial)):
         if api._flag(flag.lstrip("-").replace("-", "_"), on):
             args.append(flag)
@@ -69,7 +74,7 @@ def _limit(name, value, scale):
 def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAULT_TIMEOUT,
           memory=DEFAULT_MEMORY, force=False, format="ply", spacing=None, samples=None, theta=None,
           rho=None, refine=False, uniform=False, plain_medial=False, thickness=None, cli=None,
-          progress=True, on_progress=None, stop=None):
+          progress=True, on_progress=None, stop=None, min_feature=None):
     """Computes the medial axis of every part of ``inputs`` into ``out_dir``, on Dask.
 
     inputs     a path or a list of them: CAD files (STEP, IGES, BREP, FCStd), folders (searched
@@ -84,8 +89,9 @@ def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAU
     force      redo every part; by default a part whose outputs exist, are newer than its input
                and were made with the same options is skipped (resume)
     format     the mesh format: "ply", "obj" or "ma"
-    spacing, samples, theta, rho, refine, uniform, plain_medial
-               as `cadmedial compute` (--spacing ... --plain-medial); None: its defaults
+    spacing, samples, theta, rho, refine, uniform, plain_medial, min_feature
+               as `cadmedial compute` (--spacing ... --plain-medial, --min-feature); None: its
+               defaults
     thickness  None, or {"min": 0.8, "max": None}: also run the wall-thickness analysis (issue 34)
                on each part; refused while cadmedial.thickness does not exist
     cli        the cadmedial program to run (default: found as programs.find_cli says)
@@ -115,7 +121,8 @@ def batch(inputs, out_dir, client=None, jobs=None, scheduler=None, timeout=DEFAU
     analyses.check(extra)
     columns = analyses.columns(extra)
     options = TaskOptions(cli=find_cli(cli), fmt=format,
-                          compute_args=compute_args(spacing, samples, theta, rho, refine, uniform, plain_medial),
+                          compute_args=compute_args(spacing, samples, theta, rho, refine, uniform, plain_medial,
+                                                    min_feature),
                           timeout=_limit("timeout", timeout, 1.0), memory_bytes=_limit("memory", memory, 2**30),
                           analyses=extra)
     if options.memory_bytes is not None:

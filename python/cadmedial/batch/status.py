@@ -76,7 +76,9 @@ def summary_columns(stats):
         "faces": stats.get("faces"),
         "edges": stats.get("edges"),
         "spacing": stats.get("spacing"),
+        # The engine's own judgement when its stats carry it (older stats: the same rule here).
         "topology_right": bool(solids) and all(
+            s["topology_right"] if "topology_right" in s else
             s.get("euler_characteristic") == s.get("solid_euler_characteristic") and s.get("components", 1) <= 1
             for s in solids),
         "euler": [s.get("euler_characteristic") for s in solids],
