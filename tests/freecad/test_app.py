@@ -182,6 +182,32 @@ def test_document_saved_before_refine_gets_it_off_on_reopening(doc, tmp_path):
     assert "Touched" not in feature.State
 
 
+def test_min_feature_is_a_property_that_limits_the_refinement_and_is_named(doc, capfd):
+    # The 10-thick box at spacing 6: its walls are sampled finer, unless MinFeature is 12, which
+    # keeps one spacing and says so in the report view. A document saved before the property
+    # gets none (0) on reopening.
+    box = add_box(doc)
+    feature = medial_app.make_medial_axis(box, spacing=6.0)
+    fine = feature.SampleCount
+    capfd.readouterr()
+    feature.MinFeature = 12.0
+    doc.recompute()
+    out, err = capfd.readouterr()
+    assert feature.Status == "ok"
+    assert feature.SampleCount < fine / 2
+    assert "thinner than the minimum feature size given (12)" in out + err
+    assert feature.SampleCount == medial_app.medial_result(feature).stats["samples"]
+
+
+def test_document_saved_before_min_feature_gets_none_on_reopening(doc, tmp_path):
+    feature = medial_app.make_medial_axis(add_box(doc), samples=SAMPLES)
+    feature.removeProperty("MinFeature")
+    doc = reopen(doc, tmp_path)
+    feature = doc.getObject("MedialAxis")
+    assert feature.MinFeature.Value == 0.0
+    assert "Touched" not in feature.State
+
+
 def test_refine_samples_thin_ribs_finer_until_the_axis_is_right(doc, capfd):
     # Six ribs 0.15 thick and 15 tall on a block: at 3000 samples their sheets come apart (the
     # axis in 2 pieces) even after the thin-wall refinement; the report view says so. With Refine

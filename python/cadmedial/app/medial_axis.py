@@ -41,6 +41,8 @@ LATER_COUNTS = [("App::PropertyInteger", "EdgeCount",
                 ("App::PropertyLength", "ThinnestWall",
                  "Thickness of the thinnest wall the samples found (0: no wall under 2 spacings)"),
                 ("App::PropertyVector", "ThinnestWallAt", "Where that thinnest wall is")]
+MIN_FEATURE_DOC = ("Walls thinner than this are not sampled finer than it needs (a warning names "
+                   "them and where); 0: none")
 REFINE_DOC = ("Sample a solid again with 2.5 times the samples (at most twice) where its medial "
               "axis's Euler characteristic is not the solid's")
 
@@ -64,6 +66,7 @@ class MedialAxis:
         add("App::PropertyFloat", "Theta", INPUTS, "Angle condition threshold in degrees, in (0, 90)")
         add("App::PropertyFloat", "Rho", INPUTS, "Ratio condition threshold, > 0")
         add("App::PropertyBool", "Refine", INPUTS, REFINE_DOC)
+        add("App::PropertyLength", "MinFeature", INPUTS, MIN_FEATURE_DOC)
         obj.Theta = 5.0
         obj.Rho = 8.0
         obj.Refine = True
@@ -106,6 +109,8 @@ class MedialAxis:
             # Off for a document saved before it existed: a recompute gives what it gave then.
             obj.addProperty("App::PropertyBool", "Refine", INPUTS, REFINE_DOC)
             obj.Refine = False
+        if "MinFeature" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyLength", "MinFeature", INPUTS, MIN_FEATURE_DOC)
 
     def execute(self, obj):
         started = time.perf_counter()
@@ -153,7 +158,12 @@ def add_later_counts(obj):
 def parameters_of(obj):
     """What compute_for(obj) depends on besides the source's shape."""
     return (obj.Source.Name if obj.Source else None, float(obj.Spacing.Value), int(obj.Samples),
-            float(obj.Theta), float(obj.Rho), bool(obj.Refine))
+            float(obj.Theta), float(obj.Rho), bool(obj.Refine), min_feature_of(obj))
+
+
+def min_feature_of(obj):
+    """obj's MinFeature in model units (0: none; a document saved before it existed has none)."""
+    return float(obj.MinFeature.Value) if "MinFeature" in obj.PropertiesList else 0.0
 
 
 def compute_for(obj):
@@ -161,16 +171,17 @@ def compute_for(obj):
     if obj.Source is None:
         raise cadmedial.InvalidInput("no Source: link a solid")
     return compute_shape(Part.getShape(obj.Source), obj.Spacing.Value, obj.Samples, obj.Theta,
-                         obj.Rho, obj.Label, bool(obj.Refine))
+                         obj.Rho, obj.Label, bool(obj.Refine), min_feature_of(obj))
 
 
-def compute_shape(shape, spacing, samples, theta, rho, label, refine=None):
+def compute_shape(shape, spacing, samples, theta, rho, label, refine=None, min_feature=0.0):
     """cadmedial.compute on a Part.Shape, with FreeCAD's progress bar (Esc cancels) in the GUI."""
     if shape.isNull():
         raise cadmedial.InvalidInput("the source has no shape (recompute it first?)")
     spacing = spacing if spacing > 0 else None
     samples = samples if (spacing is None and samples > 0) else None
-    params = dict(spacing=spacing, samples=samples, theta=theta, rho=rho, refine=refine)
+    params = dict(spacing=spacing, samples=samples, theta=theta, rho=rho, refine=refine,
+                  min_feature=min_feature if min_feature > 0 else None)
     if App.GuiUp and registry.background_runner is not None:
         # The GUI computes, and builds the mesh and colours, in a thread and keeps drawing,
         # with a progress dialog and Stop. Returns a StoredResult.
@@ -180,8 +191,7 @@ def compute_shape(shape, spacing, samples, theta, rho, label, refine=None):
     if not App.GuiUp:
         return cadmedial.compute(shape, **params)
     with StatusBarProgress("Medial axis of %s" % label) as progress:
-        return cadmedial.compute(shape, spacing=spacing, samples=samples, theta=theta, rho=rho,
-                                 refine=refine, progress=progress)
+        return cadmedial.compute(shape, progress=progress, **params)
 
 
 class StatusBarProgress:
@@ -210,11 +220,11 @@ class StatusBarProgress:
 
 
 def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, shape=False,
-                     result=None, name="MedialAxis", refine=None):
+                     result=None, name="MedialAxis", refine=None, min_feature=None):
     """Adds a MedialAxis feature for ``source`` (a document object with a solid shape) and
     computes it; with shape=True also a MedialShape (Part feature of planar faces).
 
-    spacing/samples/theta/rho/refine as in cadmedial.compute. ``result``: a MedialAxisResult already
+    spacing/samples/theta/rho/refine/min_feature as in cadmedial.compute. ``result``: a MedialAxisResult already
     computed with these parameters (the task panel computes in a thread first).
     Returns the new object. When the compute fails, the error goes to the report view and is
     raised, and the document is left as it was: no object is added.
@@ -227,7 +237,7 @@ def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, sha
     if result is None:
         try:
             result = compute_shape(Part.getShape(source), spacing or 0.0, samples or 0,
-                                   theta, rho, source.Label, refine)
+                                   theta, rho, source.Label, refine, min_feature or 0.0)
         except Exception as error:
             App.Console.PrintError("Medial axis of %s: %s\n" % (source.Label, error))
             raise
@@ -240,6 +250,7 @@ def make_medial_axis(source, spacing=None, samples=None, theta=5.0, rho=8.0, sha
     obj.Theta = theta
     obj.Rho = rho
     obj.Refine = bool(refine)
+    obj.MinFeature = min_feature or 0.0
     proxy.pending = (parameters_of(obj), result)  # a MedialAxisResult or a StoredResult
     attach_view_provider(obj, MedialAxis.Type)
     doc.recompute([obj])  # unlike obj.recompute(), this also clears the object's Touched flag
