@@ -6,7 +6,8 @@
 For each part: the analysis (default density, corners="exclude"), then the reference at up to
 --points counted surface points lying inside one face (seeded choice), at the exact B-rep point
 nearest each. Prints per part: p50/p95/max relative error, the analysis's and the medial axis's
-times, the reference's time per point and for all the analysis's points (extrapolated), and the
+times (and the exact refinement's part of the analysis, with the share of counted points it
+refined), the reference's time per point and for all the analysis's points (extrapolated), and the
 reference at the analysis's thinnest point.
 """
 
@@ -114,6 +115,9 @@ def bench_part(name, count, seed=0):
         "min": res.statistics["min"], "min_at": None if thin is None else res.points[thin].tolist(),
         "min_reference": ref_min,
         "spacing": res.settings["spacing"],
+        "refine_s": res.timings.get("refine"),
+        "refined_share": None if res.refined is None
+        else float(res.refined[res.counted].mean()) if res.counted.any() else 0.0,
     }
 
 
@@ -141,10 +145,12 @@ def main():
         else:
             f = lambda x: "  nan" if x is None or not math.isfinite(x) else "%5.2f" % (100 * x)
             print("%-44s pts %6d cmp %3d counted %3.0f%% err%% p50 %s p95 %s max %s | medial %6.2fs "
-                  "analysis %6.2fs (x%.2f) ref %.1fms/pt (%.0fs all) | min %.4g ref %.4g"
+                  "analysis %6.2fs (x%.2f; refine %s, %s) ref %.1fms/pt (%.0fs all) | min %.4g ref %.4g"
                   % (name, rec["points"], rec["compared"], 100 * rec["counted_share"],
                      f(rec["p50"]), f(rec["p95"]), f(rec["max"]), rec["medial_s"],
                      rec["analysis_s"], rec["total_over_medial"],
+                     "-" if rec["refine_s"] is None else "%.2fs" % rec["refine_s"],
+                     "-" if rec["refined_share"] is None else "%.0f%%" % (100 * rec["refined_share"]),
                      1e3 * rec["reference_s_per_point"], rec["reference_s_all_points"],
                      rec["min"] or float("nan"), rec["min_reference"]), flush=True)
         with open(a.out, "w") as out:
