@@ -25,10 +25,12 @@ CORNER_POLICIES = ("exclude", "zero")
 # of a convex edge (rims of a 4 mm plate at 0.7 from the edge read 1.19 for 1.38), which made
 # false thin patches of a few points along every rim.
 EDGE_LIMITED_TOL = 0.25
-# The exact refinement (refine.py) gets this share of the medial axis's own compute time, and at
-# least REFINE_FLOOR seconds (a reused medial result took no time here).
-REFINE_SHARE = 0.3
-REFINE_FLOOR = 0.5
+# The exact refinement (refine.py) gets at most the medial axis's own compute time, and at least
+# REFINE_FLOOR seconds (a reused medial result took no time here). A third of it (what the 1.3x
+# target would leave) refined 8 % of a tube's points on a loaded machine; the rest of the
+# analysis (surface mesh, 4-D queries) already takes 1.5-12x the medial time (docs/thickness.md).
+REFINE_SHARE = 1.0
+REFINE_FLOOR = 2.0
 
 
 @dataclass
