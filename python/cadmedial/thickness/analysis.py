@@ -98,6 +98,17 @@ def check_settings(minimum, maximum, corners):
     return minimum, maximum
 
 
+def _on_one_face(mesh):
+    """(N,) bool: the point's triangles all lie on one B-rep face (not on an edge between two;
+    a seam's points are on one face)."""
+    t, f = mesh.triangles.ravel(), np.repeat(mesh.triangle_face, 3)
+    lo = np.full(len(mesh.points), np.iinfo(np.int64).max)
+    hi = np.full(len(mesh.points), -1)
+    np.minimum.at(lo, t, f)
+    np.maximum.at(hi, t, f)
+    return lo == hi
+
+
 def _vertex_solid(medial):
     solid = np.zeros(medial.num_vertices, dtype=np.int64)
     solid[medial.faces.indices] = np.repeat(medial.face_solid, medial.faces.sizes())
@@ -181,8 +192,10 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
     if refine_budget is None:
         refine_budget = builtins.max(REFINE_FLOOR, REFINE_SHARE * timings["medial_axis"])
     refined = np.zeros(len(values), bool)
-    # Outside the corner band only (inside it the edge's bound rules), thinnest first.
-    todo = np.nonzero(dist >= band)[0]
+    # Outside the corner band only (inside it the edge's bound rules), thinnest first, and on
+    # one face only: at a point on an edge between faces (even a convex one turning by less than
+    # the band's 10 degrees) no ball is tangent, and the exact value would be about 0 there.
+    todo = np.nonzero((dist >= band) & _on_one_face(mesh))[0]
     todo = todo[np.argsort(values[todo], kind="stable")]
     diag = shape.BoundBox.DiagonalLength
     t_refine = time.perf_counter()

@@ -13,7 +13,9 @@ surfaces are projected in closed form there).
 
 A value is returned only for a ball that was checked to lie inside: its centre's distance to the
 boundary is at least r (1 - TOL). Points where that was not reached within the steps or the time
-budget, or that lie on a B-rep edge (no normal), keep the medial reading.
+budget, or whose nearest boundary point lies on a B-rep edge (no normal) unless one face holds
+both sides (a seam), keep the medial reading. (The caller leaves out points on an edge between
+two faces: no ball is tangent there.)
 """
 
 import time
@@ -117,9 +119,10 @@ def refine_thickness(solid, points, values, reach, diag, budget=np.inf, order=No
 
 
 def edge_normals_from_faces(faces, mesh):
-    """edge_normals for refine_thickness: the exact normal of the faces (Part.Face list, as
-    mesh.triangle_face numbers them) around a mesh point on an edge, where they agree. Its sign
-    is the mesh's (outward by the right-hand rule): Face.normalAt ignores a reversed face."""
+    """edge_normals for refine_thickness: the exact normal of the face (Part.Face list, as
+    mesh.triangle_face numbers them) around a mesh point on a seam; where the point's triangles
+    lie on several faces, their normals must agree. Its sign is the mesh's (outward by the
+    right-hand rule): Face.normalAt ignores a reversed face."""
     import FreeCAD
 
     tri_normal = mesh.triangle_normals()
