@@ -5,8 +5,10 @@
 
 For each part: the analysis (default density, corners="exclude"), then the reference at up to
 --points counted surface points lying inside one face (seeded choice), at the exact B-rep point
-nearest each. Prints per part: p50/p95/max relative error, the analysis's and the medial axis's
-times, the reference's time per point and for all the analysis's points (extrapolated), and the
+nearest each. Prints per part: p50/p95/max relative error (and, at the same points, of the medial
+reading alone: the analysis again on the same medial axis with refine_budget=0), the analysis's and the medial axis's
+times (and the exact refinement's part of the analysis, with the share of counted points it
+refined), the reference's time per point and for all the analysis's points (extrapolated), and the
 reference at the analysis's thinnest point.
 """
 
@@ -66,6 +68,9 @@ def single_face_points(result):
 def bench_part(name, count, seed=0):
     shape = load(name)
     res = thickness(shape)
+    # The medial reading alone (no refinement) on the same medial axis and surface mesh, compared
+    # at the same points: what the refinement changes.
+    plain = thickness(shape, medial=res.medial, refine_budget=0)
     faces = shape.Faces
     inside, face_of = single_face_points(res)
     pool = inside[res.counted[inside]]
@@ -93,6 +98,7 @@ def bench_part(name, count, seed=0):
     got = res.values[pick]
     ok = ref > 0
     err = np.abs(got[ok] / ref[ok] - 1.0)
+    err_plain = np.abs(plain.values[pick][ok] / ref[ok] - 1.0)
     counted = np.nonzero(res.counted)[0]
     thin = counted[np.argmin(res.values[counted])] if len(counted) else None
     if thin is not None and thin in set(inside.tolist()):
@@ -106,6 +112,10 @@ def bench_part(name, count, seed=0):
         "p50": float(np.quantile(err, 0.5)) if len(err) else None,
         "p95": float(np.quantile(err, 0.95)) if len(err) else None,
         "max": float(err.max()) if len(err) else None,
+        "medial_reading_p50": float(np.quantile(err_plain, 0.5)) if len(err) else None,
+        "medial_reading_p95": float(np.quantile(err_plain, 0.95)) if len(err) else None,
+        "medial_reading_max": float(err_plain.max()) if len(err) else None,
+        "medial_reading_analysis_s": plain.timings["analysis"],
         "medial_s": res.timings["medial_axis"], "analysis_s": res.timings["analysis"],
         "total_over_medial": (res.timings["medial_axis"] + res.timings["analysis"])
         / max(res.timings["medial_axis"], 1e-9),
@@ -114,6 +124,9 @@ def bench_part(name, count, seed=0):
         "min": res.statistics["min"], "min_at": None if thin is None else res.points[thin].tolist(),
         "min_reference": ref_min,
         "spacing": res.settings["spacing"],
+        "refine_s": res.timings.get("refine"),
+        "refined_share": None if res.refined is None
+        else float(res.refined[res.counted].mean()) if res.counted.any() else 0.0,
     }
 
 
@@ -140,11 +153,15 @@ def main():
             print("%-44s refused: %s" % (name, rec["refused"][:100]), flush=True)
         else:
             f = lambda x: "  nan" if x is None or not math.isfinite(x) else "%5.2f" % (100 * x)
-            print("%-44s pts %6d cmp %3d counted %3.0f%% err%% p50 %s p95 %s max %s | medial %6.2fs "
-                  "analysis %6.2fs (x%.2f) ref %.1fms/pt (%.0fs all) | min %.4g ref %.4g"
+            print("%-44s pts %6d cmp %3d counted %3.0f%% err%% p50 %s p95 %s max %s "
+                  "(medial reading: p50 %s p95 %s max %s) | medial %6.2fs "
+                  "analysis %6.2fs (x%.2f; refine %s, %s) ref %.1fms/pt (%.0fs all) | min %.4g ref %.4g"
                   % (name, rec["points"], rec["compared"], 100 * rec["counted_share"],
-                     f(rec["p50"]), f(rec["p95"]), f(rec["max"]), rec["medial_s"],
+                     f(rec["p50"]), f(rec["p95"]), f(rec["max"]), f(rec["medial_reading_p50"]),
+                     f(rec["medial_reading_p95"]), f(rec["medial_reading_max"]), rec["medial_s"],
                      rec["analysis_s"], rec["total_over_medial"],
+                     "-" if rec["refine_s"] is None else "%.2fs" % rec["refine_s"],
+                     "-" if rec["refined_share"] is None else "%.0f%%" % (100 * rec["refined_share"]),
                      1e3 * rec["reference_s_per_point"], rec["reference_s_all_points"],
                      rec["min"] or float("nan"), rec["min_reference"]), flush=True)
         with open(a.out, "w") as out:

@@ -8,4 +8,5 @@ PYBIND11_MODULE(_core, m) {
   cadmedial::bindings::bind_errors(m);
   cadmedial::bindings::bind_mesh(m);
   cadmedial::bindings::bind_compute(m);
+  cadmedial::bindings::bind_boundary_distance(m);
 }

@@ -1,5 +1,6 @@
 """cadmedial.thickness(): the wall thickness of a solid's surface from its medial axis."""
 
+import builtins
 import math
 import time
 from dataclasses import dataclass, field
@@ -9,6 +10,7 @@ import numpy as np
 from .. import _core
 from ..api import _number, compute
 from .convex_edges import distance_to_convex_edges, edge_bound
+from .refine import edge_normals_from_faces, refine_thickness
 from .regions import find_regions
 from .shape_source import solids_of
 from .sphere import sphere_thickness
@@ -23,6 +25,12 @@ CORNER_POLICIES = ("exclude", "zero")
 # of a convex edge (rims of a 4 mm plate at 0.7 from the edge read 1.19 for 1.38), which made
 # false thin patches of a few points along every rim.
 EDGE_LIMITED_TOL = 0.25
+# The exact refinement (refine.py) gets at most the medial axis's own compute time, and at least
+# REFINE_FLOOR seconds (a reused medial result took no time here). A third of it (what the 1.3x
+# target would leave) refined 8 % of a tube's points on a loaded machine; the rest of the
+# analysis (surface mesh, 4-D queries) already takes 1.5-12x the medial time (docs/thickness.md).
+REFINE_SHARE = 1.0
+REFINE_FLOOR = 2.0
 
 
 @dataclass
@@ -53,6 +61,7 @@ class ThicknessResult:
     settings: dict
     timings: dict = field(default_factory=dict)
     medial: object = None
+    refined: np.ndarray = None
 
     @property
     def passed(self):
@@ -89,6 +98,17 @@ def check_settings(minimum, maximum, corners):
     return minimum, maximum
 
 
+def _on_one_face(mesh):
+    """(N,) bool: the point's triangles all lie on one B-rep face (not on an edge between two;
+    a seam's points are on one face)."""
+    t, f = mesh.triangles.ravel(), np.repeat(mesh.triangle_face, 3)
+    lo = np.full(len(mesh.points), np.iinfo(np.int64).max)
+    hi = np.full(len(mesh.points), -1)
+    np.minimum.at(lo, t, f)
+    np.maximum.at(hi, t, f)
+    return lo == hi
+
+
 def _vertex_solid(medial):
     solid = np.zeros(medial.num_vertices, dtype=np.int64)
     solid[medial.faces.indices] = np.repeat(medial.face_solid, medial.faces.sizes())
@@ -98,7 +118,8 @@ def _vertex_solid(medial):
 
 
 def thickness(source, min=None, max=None, corners="exclude", samples=None, spacing=None,
-              medial=None, max_edge=None, deflection=None, bins=HISTOGRAM_BINS, progress=None):
+              medial=None, max_edge=None, deflection=None, bins=HISTOGRAM_BINS, progress=None,
+              refine_budget=None):
     """The sphere wall thickness over the surface of every solid of ``source``.
 
     source     a STEP/IGES/BREP path, BREP text or a FreeCAD Part.Shape
@@ -118,6 +139,9 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
     deflection BRepMesh's linear deflection; default a 20th of the spacing
     bins       histogram bins (count or edges)
     progress   passed to cadmedial.compute
+    refine_budget  seconds for the exact refinement of the medial reading (refine.py), thinnest
+               points first; None: REFINE_SHARE of the medial axis's time, at least REFINE_FLOOR;
+               0: none (the medial reading); math.inf: every point
 
     Returns a ThicknessResult. Raises InvalidInput (bad source or settings) or what compute
     raises."""
@@ -165,6 +189,31 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
     band = h
     dist, angle = distance_to_convex_edges(mesh, max_edge / 4.0)
     bound = edge_bound(dist, angle)
+    if refine_budget is None:
+        refine_budget = builtins.max(REFINE_FLOOR, REFINE_SHARE * timings["medial_axis"])
+    refined = np.zeros(len(values), bool)
+    # Outside the corner band only (inside it the edge's bound rules), thinnest first, and on
+    # one face only: at a point on an edge between faces (even a convex one turning by less than
+    # the band's 10 degrees) no ball is tangent, and the exact value would be about 0 there.
+    todo = np.nonzero((dist >= band) & _on_one_face(mesh))[0]
+    todo = todo[np.argsort(values[todo], kind="stable")]
+    diag = shape.BoundBox.DiagonalLength
+    t_refine = time.perf_counter()
+    edge_normals = edge_normals_from_faces(list(shape.Faces), mesh) if len(todo) else None
+    for s, solid in enumerate(solids):
+        spent = time.perf_counter() - t_refine
+        if spent >= refine_budget:
+            break
+        mine = todo[mesh.point_solid[todo] == s]
+        if not len(mine):
+            continue
+        core_solid = _core.read_brep_string(solid.exportBrepToString())
+        v, ok = refine_thickness(core_solid, mesh.points[mine], values[mine], max_edge, diag,
+                                 budget=refine_budget - spent,
+                                 edge_normals=lambda i, feet, mine=mine: edge_normals(mine[i], feet))
+        values[mine], refined[mine] = v, ok
+    t4 = time.perf_counter()
+    timings["refine"] = t4 - t_refine
     if corners == "zero":
         values = np.minimum(values, bound)
         counted = np.ones(len(values), bool)
@@ -174,13 +223,14 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
     stats = thickness_statistics(values, area, counted, minimum, maximum, bins)
     thin = find_regions(mesh, values, area, counted, minimum, "thin")
     thick = find_regions(mesh, values, area, counted, maximum, "thick")
-    t4 = time.perf_counter()
-    timings["corners_regions"] = t4 - t3
-    timings["analysis"] = t4 - t1
-    timings["total"] = t4 - t0
+    t5 = time.perf_counter()
+    timings["corners_regions"] = (t_refine - t3) + (t5 - t4)
+    timings["analysis"] = t5 - t1
+    timings["total"] = t5 - t0
     settings = {"min": minimum, "max": maximum, "corners": corners, "spacing": h,
                 "band": band, "max_edge": max_edge, "deflection": deflection,
-                "contain_tol": 0.01, "solids": len(solids)}
+                "contain_tol": 0.01, "solids": len(solids), "refine_budget": refine_budget,
+                "refined": int(refined.sum())}
     return ThicknessResult(mesh.points, values, counted, area, dist, mesh.triangles,
                            mesh.triangle_face, mesh.face_names, gap, ball, thin, thick, stats,
-                           settings, timings, medial)
+                           settings, timings, medial, refined)
