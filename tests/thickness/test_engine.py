@@ -50,7 +50,10 @@ def test_sphere_reads_the_slab_2_and_a_vertical_ray_2_31():
     centre = rot @ np.array([20.0, 15.0, 1.0])
     on_top = centre + n  # a point of the upper face, far from its edges
     got = probe(shape, on_top, t.medial)
-    assert got["sphere"] == pytest.approx(2.0, rel=ENGINE_RTOL)
+    assert got["sphere_medial"] == pytest.approx(2.0, rel=ENGINE_RTOL)
+    assert got["exact"] and got["sphere"] == pytest.approx(2.0, rel=1e-5)  # the shrinking ball
+    # Its ball is tangent at the point, inside the slab: centre on the mid-plane.
+    assert np.allclose(got["ball_centre"], np.array(got["point"]) - n, atol=1e-5)
     assert got["ray"] == pytest.approx(2.0, rel=1e-6)  # along the exact normal
     assert np.allclose(got["normal"], n, atol=1e-9)
     from cadmedial.thickness.ray import ray_thickness_one

@@ -2,7 +2,9 @@
 
 import numpy as np
 
+from .. import _core
 from .ray import outward_normal, ray_thickness_one
+from .refine import START, _shrink
 from .shape_source import solids_of
 from .sphere import NEIGHBOURS, sphere_thickness
 
@@ -23,7 +25,9 @@ def least_power_balls(point, centres, radii, k=NEIGHBOURS):
 
 def probe(source, point, medial, face=None, reach=0.0):
     """Dict for the boundary point of ``source`` nearest ``point`` (3,): point, face (name),
-    normal (outward), sphere (thickness), ball_centre, ball_radius, ray (thickness along the
+    normal (outward), sphere (thickness: the exact largest tangent ball's diameter when
+    ``exact``, else the medial reading), sphere_medial (the medial axis's reading), exact,
+    ball_centre, ball_radius (of that ball), ray (thickness along the
     inward normal, nan if the ray finds no wall), ray_end. ``medial`` is the MedialAxisResult
     (or a ThicknessResult's .medial) of the same shape. ``face``: the name ("Face3") of the face
     the point lies on when the caller knows it (a pick): only that face is searched. ``reach``:
@@ -48,11 +52,24 @@ def probe(source, point, medial, face=None, reach=0.0):
     near = least_power_balls(q, centres, radii)
     value, _, ball = sphere_thickness(q[None, :], centres[near], radii[near], reach=reach)
     ball = near[ball]
+    ball_centre = np.asarray(medial.vertices[ball[0]], dtype=np.float64)
+    ball_radius = float(medial.radius[ball[0]])
+    medial_value = float(value[0])
+    # The exact largest ball tangent at q (refine.py's shrinking ball), as the analysis reads it;
+    # where it cannot be confirmed the medial reading stands.
+    exact = False
+    if np.isfinite(medial_value) and medial_value > 0:
+        core = _core.read_brep_string(solid.exportBrepToString())
+        r, ok = _shrink(core, q[None, :], normal[None, :], np.array([START * medial_value / 2.0]),
+                        shape.BoundBox.DiagonalLength)
+        if ok[0]:
+            exact = True
+            ball_radius = float(r[0])
+            ball_centre = q - ball_radius * normal
     ray = ray_thickness_one(solid, q, -normal, 2.0 * shape.BoundBox.DiagonalLength)
     return {"point": q.tolist(), "face": "Face%d" % (i + 1), "normal": normal.tolist(),
-            "sphere": float(value[0]),
-            "ball_centre": [float(x) for x in medial.vertices[ball[0]]],
-            "ball_radius": float(medial.radius[ball[0]]),
+            "sphere": 2.0 * ball_radius if exact else medial_value, "sphere_medial": medial_value,
+            "exact": exact, "ball_centre": [float(x) for x in ball_centre], "ball_radius": ball_radius,
             "ray": ray, "ray_end": (q - ray * normal).tolist() if np.isfinite(ray) else None}
 
 
