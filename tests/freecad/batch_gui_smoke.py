@@ -4,63 +4,23 @@
 # then reads the summary table, double-clicks a row and saves a picture of the dialog; last, a
 # batch of two slow parts stopped a few seconds in.
 # Writes $CADMEDIAL_GUI_OUT/batch.json and batch.png; exits with os._exit.
-import gc
-import json
 import multiprocessing.spawn
 import os
 import shutil
 import subprocess
 import time
-import traceback
 
 import FreeCAD as App
 import FreeCADGui as Gui
 import Part
 from PySide2 import QtCore, QtWidgets
+import sys  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # gui_heartbeat beside this script
+from gui_heartbeat import Heartbeat, run_and_report  # noqa: E402
 
 OUT = os.environ["CADMEDIAL_GUI_OUT"]
 EXAMPLES = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir, "examples", "data")
 report = {}
-
-
-class Heartbeat:
-    """The longest gap between ticks of a 10 ms timer since reset(), in ms; and the full garbage
-    collections meanwhile (FreeCAD's heap is large: each holds the GIL, so the GUI, a while)."""
-
-    def __init__(self):
-        self.timer = QtCore.QTimer()
-        self.timer.setInterval(10)
-        self.timer.timeout.connect(self._tick)
-        self.reset()
-        self.timer.start()
-        gc.callbacks.append(self._collected)
-
-    def reset(self):
-        self.last = self.start = time.monotonic()
-        self.longest = 0.0
-        self.gaps = []  # (seconds since reset, gap ms) of the gaps over 50 ms
-        self.collections = []  # (seconds since reset, ms) of each full garbage collection
-
-    def _collected(self, phase, info):
-        if info["generation"] != 2:
-            return
-        if phase == "start":
-            self._gc_start = time.monotonic()
-        else:
-            self.collections.append((round(self._gc_start - self.start, 2),
-                                     round(1000.0 * (time.monotonic() - self._gc_start), 1)))
-
-    def _tick(self):
-        now = time.monotonic()
-        gap = 1000.0 * (now - self.last)
-        self.longest = max(self.longest, gap)
-        if gap > 50:
-            self.gaps.append((round(self.last - self.start, 2), round(gap, 1)))
-        self.last = now
-
-    def gap(self):
-        self._tick()
-        return round(self.longest, 1)
 
 
 # The same 10 ms tick in a plain Python process beside FreeCAD, at its priority: the gaps it sees
@@ -210,13 +170,7 @@ def run():
 
 
 def main():
-    try:
-        run()
-    except Exception:
-        report["exception"] = traceback.format_exc()
-    with open(os.path.join(OUT, "batch.json"), "w") as f:
-        json.dump(report, f, indent=1)
-    os._exit(0)
+    run_and_report(run, report, os.path.join(OUT, "batch.json"))
 
 
 QtCore.QTimer.singleShot(1500, main)

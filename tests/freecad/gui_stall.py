@@ -7,44 +7,21 @@
 # closes); a second compute stopped after 1 s (until the panel is idle again).
 #   CADMEDIAL_STALL_SOURCE  STEP file (default: the bundled NIST FTC 11)
 #   CADMEDIAL_STALL_SAMPLES sample count typed (default 300000)
-import json
 import os
 import time
-import traceback
 
 import FreeCAD as App
 import FreeCADGui as Gui
 import Import
 from PySide2 import QtCore, QtGui, QtWidgets
+import sys  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # gui_heartbeat beside this script
+from gui_heartbeat import Heartbeat, run_and_report  # noqa: E402
 
 OUT = os.environ["CADMEDIAL_GUI_OUT"]
 SOURCE = os.environ.get("CADMEDIAL_STALL_SOURCE")
 SAMPLES = os.environ.get("CADMEDIAL_STALL_SAMPLES", "300000")
 report = {"samples": int(SAMPLES), "source": SOURCE}
-
-
-class Heartbeat:
-    """The longest gap between ticks of a 10 ms timer since reset(), in ms."""
-
-    def __init__(self):
-        self.timer = QtCore.QTimer()
-        self.timer.setInterval(10)
-        self.timer.timeout.connect(self._tick)
-        self.reset()
-        self.timer.start()
-
-    def reset(self):
-        self.last = time.monotonic()
-        self.longest = 0.0
-
-    def _tick(self):
-        now = time.monotonic()
-        self.longest = max(self.longest, 1000.0 * (now - self.last))
-        self.last = now
-
-    def gap(self):
-        self._tick()
-        return round(self.longest, 1)
 
 
 def spin(condition, seconds):
@@ -132,13 +109,7 @@ def run():
 
 
 def main():
-    try:
-        run()
-    except Exception:
-        report["exception"] = traceback.format_exc()
-    with open(os.path.join(OUT, "stall.json"), "w") as f:
-        json.dump(report, f, indent=1)
-    os._exit(0)
+    run_and_report(run, report, os.path.join(OUT, "stall.json"))
 
 
 QtCore.QTimer.singleShot(1500, main)

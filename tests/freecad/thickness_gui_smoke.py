@@ -4,14 +4,15 @@
 # points by mouse clicks on the 3D view (thickness, the ball and ray nodes, the longest GUI stall
 # by a 10 ms timer), clicks a region, exports CSV and HTML, and saves screenshots.
 # Writes $CADMEDIAL_GUI_OUT/thickness.json; exits with os._exit.
-import json
 import os
 import time
-import traceback
 
 import FreeCAD as App
 import FreeCADGui as Gui
 from PySide2 import QtCore, QtGui, QtWidgets
+import sys  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # gui_heartbeat beside this script
+from gui_heartbeat import Heartbeat, run_and_report  # noqa: E402
 
 OUT = os.environ["CADMEDIAL_GUI_OUT"]
 SAMPLES = 20000
@@ -19,30 +20,6 @@ SAMPLES = 20000
 # the rib's side half-way up (1).
 PROBES = [((8.0, 5.0, 4.0), 4.0), ((20.5, 20.0, 9.0), 1.0), ((30.0, 10.0, 4.0), 4.0)]
 report = {}
-
-
-class Heartbeat:
-    """The longest gap between ticks of a 10 ms timer since reset(), in ms (as gui_stall.py)."""
-
-    def __init__(self):
-        self.timer = QtCore.QTimer()
-        self.timer.setInterval(10)
-        self.timer.timeout.connect(self._tick)
-        self.reset()
-        self.timer.start()
-
-    def reset(self):
-        self.last = time.monotonic()
-        self.longest = 0.0
-
-    def _tick(self):
-        now = time.monotonic()
-        self.longest = max(self.longest, 1000.0 * (now - self.last))
-        self.last = now
-
-    def gap(self):
-        self._tick()
-        return round(self.longest, 1)
 
 
 def spin(seconds):
@@ -260,10 +237,4 @@ def check_files(doc, task):
     report["out"] = OUT
 
 
-try:
-    run()
-except Exception:
-    report["exception"] = traceback.format_exc()
-with open(os.path.join(OUT, "thickness.json"), "w") as f:
-    json.dump(report, f, indent=1)
-os._exit(0)
+run_and_report(run, report, os.path.join(OUT, "thickness.json"))
