@@ -3,46 +3,18 @@ into a scratch HOME as a user would: three parts (two solids, one file that is n
 the dialog's Start button, the GUI's longest stall measured with a 10 ms timer, the summary table
 read back, a row opened, then a slow batch stopped. A screenshot of the dialog is kept."""
 
-import json
-import os
-import shutil
-import subprocess
-
 import pytest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.normpath(os.path.join(HERE, os.pardir, os.pardir))
+from conftest import run_gui_script
+
 COLUMN = {}
 
 
 @pytest.fixture(scope="module")
 def smoke(tmp_path_factory):
-    for tool in ("xvfb-run", "freecad"):
-        if shutil.which(tool) is None:
-            pytest.skip("the GUI test needs %s" % tool)
-    home = tmp_path_factory.mktemp("home")
-    out = tmp_path_factory.mktemp("gui")
-    build = os.environ.get("CADMEDIAL_BUILD_DIR", os.path.join(REPO, "build"))
-    subprocess.run([os.path.join(REPO, "tools", "install_addon.sh"), "--build-dir", build,
-                    "--dest", str(home / ".local/share/FreeCAD/Mod/MedialAxis")],
-                   check=True, capture_output=True, text=True)
-    env = dict(os.environ, HOME=str(home), CADMEDIAL_GUI_OUT=str(out),
-               QTWEBENGINE_DISABLE_SANDBOX="1", QTWEBENGINE_CHROMIUM_FLAGS="--no-sandbox",
-               LIBGL_ALWAYS_SOFTWARE="1")
     # Only what the addon installed: its package, its compiled module, its program.
-    for name in ("PYTHONPATH", "CADMEDIAL_CORE_DIR", "CADMEDIAL_CLI"):
-        env.pop(name, None)
-    subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1400x1000x24", "freecad",
-                    os.path.join(HERE, "batch_gui_smoke.py")],
-                   env=env, capture_output=True, text=True, timeout=600)
-    report = json.loads((out / "batch.json").read_text())
-    keep = os.environ.get("CADMEDIAL_SCREENSHOT_DIR")
-    if keep and (out / "batch.png").exists():
-        os.makedirs(keep, exist_ok=True)
-        shutil.copy(out / "batch.png", keep)
-    assert "exception" not in report, report["exception"]
-    report["out"] = out
-    report["home"] = home
+    report, _, _ = run_gui_script(tmp_path_factory, "batch_gui_smoke.py", "batch.json", keep=("batch.png",),
+                                  unset=("PYTHONPATH", "CADMEDIAL_CORE_DIR", "CADMEDIAL_CLI"))
     COLUMN.update({name: i for i, name in enumerate(report["headers"])})
     return report
 

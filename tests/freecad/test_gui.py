@@ -3,57 +3,18 @@ FreeCAD with gui_smoke.py, and check what it saw. Skips (saying why) without xvf
 FreeCAD GUI; everything else that goes wrong fails."""
 
 import re
-import json
-import os
-import shutil
-import subprocess
 
 import pytest
 
-from conftest import HERE, REPO
-
-TIMEOUT = 600
-
-
-def missing_tools():
-    needed = {"xvfb-run": "apt-get install xvfb xauth", "freecad": "apt-get install freecad"}
-    return ["%s (%s)" % (tool, how) for tool, how in needed.items() if shutil.which(tool) is None]
+from conftest import run_gui_script
 
 
 @pytest.fixture(scope="module")
 def smoke(tmp_path_factory):
-    missing = missing_tools()
-    if missing:
-        pytest.skip("GUI smoke test needs " + ", ".join(missing))
-    home = tmp_path_factory.mktemp("home")
-    out = tmp_path_factory.mktemp("gui")
-    build = os.environ.get("CADMEDIAL_BUILD_DIR", os.path.join(REPO, "build"))
-    subprocess.run([os.path.join(REPO, "tools", "install_addon.sh"), "--build-dir", build,
-                    "--dest", str(home / ".local/share/FreeCAD/Mod/MedialAxis")],
-                   check=True, capture_output=True, text=True)
-    env = dict(os.environ, HOME=str(home), CADMEDIAL_GUI_OUT=str(out),
-               # FreeCAD's Start page embeds Chromium, which refuses to run as root sandboxed.
-               QTWEBENGINE_DISABLE_SANDBOX="1", QTWEBENGINE_CHROMIUM_FLAGS="--no-sandbox",
-               LIBGL_ALWAYS_SOFTWARE="1")
-    for name in ("PYTHONPATH", "CADMEDIAL_CORE_DIR"):
-        env.pop(name, None)  # the installed addon alone must be enough
-    run = subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1400x1000x24", "freecad",
-                          os.path.join(HERE, "gui_smoke.py")],
-                         env=env, capture_output=True, text=True, timeout=TIMEOUT)
-    report_path = out / "report.json"
-    assert report_path.exists(), "FreeCAD ended (status %d) without a report:\n%s\n%s" % (
-        run.returncode, run.stdout[-3000:], run.stderr[-3000:])
-    report = json.loads(report_path.read_text())
-    keep = os.environ.get("CADMEDIAL_SCREENSHOT_DIR")
-    if keep:
-        os.makedirs(keep, exist_ok=True)
-        for name in ("workbench.png", "view.png", "panel.png", "face_message.png", "reopened.png",
-                     "reopened_workbench.png", "thinnest_wall.png", "report.json"):
-            if (out / name).exists():
-                shutil.copy(out / name, keep)
-    assert "exception" not in report, report["exception"]
-    assert run.returncode == 0, run.stderr[-3000:]
-    report["out"] = out
+    report, _, _ = run_gui_script(tmp_path_factory, "gui_smoke.py", "report.json",
+                                  keep=("workbench.png", "view.png", "panel.png", "face_message.png",
+                                        "reopened.png", "reopened_workbench.png", "thinnest_wall.png",
+                                        "report.json"), check_status=True)
     return report
 
 

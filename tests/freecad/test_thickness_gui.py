@@ -3,46 +3,17 @@ rib of a plate is listed as thin, a click selects its face; the legend range rec
 analysis; clicks on the view probe the thickness (ball and ray drawn, the GUI's stall measured);
 CSV and HTML exports; screenshots are kept."""
 
-import json
-import os
-import shutil
-import subprocess
-
 import pytest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.normpath(os.path.join(HERE, os.pardir, os.pardir))
+from conftest import run_gui_script
+
 
 
 @pytest.fixture(scope="module")
 def smoke(tmp_path_factory):
-    for tool in ("xvfb-run", "freecad"):
-        if shutil.which(tool) is None:
-            pytest.skip("the GUI test needs %s" % tool)
-    home = tmp_path_factory.mktemp("home")
-    out = tmp_path_factory.mktemp("gui")
-    build = os.environ.get("CADMEDIAL_BUILD_DIR", os.path.join(REPO, "build"))
-    subprocess.run([os.path.join(REPO, "tools", "install_addon.sh"), "--build-dir", build,
-                    "--dest", str(home / ".local/share/FreeCAD/Mod/MedialAxis")],
-                   check=True, capture_output=True, text=True)
-    env = dict(os.environ, HOME=str(home), CADMEDIAL_GUI_OUT=str(out),
-               QTWEBENGINE_DISABLE_SANDBOX="1", QTWEBENGINE_CHROMIUM_FLAGS="--no-sandbox",
-               LIBGL_ALWAYS_SOFTWARE="1")
-    for name in ("PYTHONPATH", "CADMEDIAL_CORE_DIR"):
-        env.pop(name, None)
-    subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 1400x1000x24", "freecad",
-                    os.path.join(HERE, "thickness_gui_smoke.py")],
-                   env=env, capture_output=True, text=True, timeout=600)
-    report = json.loads((out / "thickness.json").read_text())
-    keep = os.environ.get("CADMEDIAL_SCREENSHOT_DIR")
-    if keep:
-        os.makedirs(keep, exist_ok=True)
-        for name in ("thickness.png", "thickness_probe.png", "thickness_window.png",
-                     "thickness.json"):
-            if (out / name).exists():
-                shutil.copy(out / name, keep)
-    assert "exception" not in report, report["exception"]
-    report["out"] = out
+    report, _, _ = run_gui_script(tmp_path_factory, "thickness_gui_smoke.py", "thickness.json",
+                                  keep=("thickness.png", "thickness_probe.png", "thickness_window.png",
+                                        "thickness.json"))
     return report
 
 
