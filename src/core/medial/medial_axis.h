@@ -33,6 +33,7 @@ struct MedialAxisStats {
   /// surely outside are not built)
   std::size_t dropped_faces = 0;
   std::size_t components = 0;        ///< pieces of the inner axis before stray ones are dropped
+  std::size_t specks = 0;            ///< pieces without a Voronoi face (fan or edge specks), not in components
   std::size_t kept_components = 0;   ///< pieces of the output: the largest and those reaching the boundary
   std::size_t filler_faces = 0;      ///< unselected Voronoi facets kept for the topology
   std::size_t unattached_faces = 0;  ///< completion triangles left out: they would close a loop

@@ -392,8 +392,8 @@ std::string failure_message(const std::exception_ptr& failure) {
 // inner stage keeps the largest piece and those that reach the boundary: a sheet that broke off
 // (a thin rib's, where the samples across it are too few) is lost without changing the Euler
 // characteristic, so the stray pieces count too. (Not counting them, six ribs 0.6 thick at
-// spacing 1.2 were not refined: 210 stray pieces, 3.5 % of the axis's faces. A wedge's stray
-// specks may not be worth a refinement of the whole solid, but no rule yet tells them apart.)
+// spacing 1.2 were not refined: 210 stray pieces, 3.5 % of the axis's faces.) Specks without a
+// Voronoi face (a sharp wedge's crossing fans, loose 1-D edges) are not pieces (MedialAxisStats).
 bool topology_is_right(const MedialAxisStats& ms, const SolidStats& ss) {
   return ms.euler_characteristic == ss.solid_euler_characteristic && ms.components <= 1;
 }
@@ -853,6 +853,7 @@ ComputeResult compute_as_given(const TopoDS_Shape& shape, const ComputeParams& p
       ss.faces = mesh.num_faces();
       ss.dropped_faces = ms.dropped_faces;
       ss.components = ms.components;
+      ss.specks = ms.specks;
       ss.pieces = ms.kept_components;
       ss.topology_right = topology_is_right(ms, ss);
       ss.filler_faces = ms.filler_faces;

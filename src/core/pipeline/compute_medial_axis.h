@@ -26,6 +26,7 @@ struct SolidStats {
   /// outside (beyond the samples' box, or by its samples' votes alone), which are not built
   std::size_t dropped_faces = 0;
   std::size_t components = 0;      ///< pieces of the inner axis before stray ones were dropped
+  std::size_t specks = 0;          ///< pieces without a Voronoi face (not in components), dropped
   std::size_t pieces = 0;          ///< pieces of the output (the stray ones floating inside dropped)
   /// The axis has the solid's topology as far as the counts tell: one piece before the stray ones
   /// were dropped, the solid's Euler characteristic (1-D edges counted).

@@ -75,6 +75,7 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"nonconcave_corners\": " + std::to_string(s.nonconcave_corners);
     j += ", \"dropped_faces\": " + std::to_string(s.dropped_faces);
     j += ", \"components\": " + std::to_string(s.components);
+    j += ", \"specks\": " + std::to_string(s.specks);
     j += ", \"pieces\": " + std::to_string(s.pieces);
     j += std::string(", \"topology_right\": ") + (s.topology_right ? "true" : "false");
     j += ", \"filler_faces\": " + std::to_string(s.filler_faces);
