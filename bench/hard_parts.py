@@ -11,7 +11,8 @@ independent count from the B-rep.
 The ranges follow hard parts of real libraries (issue 32): walls down to about 0.05 % of the part's
 size (an electrolytic capacitor's can, 0.006 on 14; cast brackets and ribs), convex edges beside
 walls one or two sample spacings thick (U-shaped and five-sided terminal caps wrapping a chip,
-gull-wing and J leads with rounded bends), wedges of 10 to 25 degrees, fine holes and slots beside
+gull-wing and J leads with rounded bends), wedges of 10 to 25 degrees (and convex polytopes whose
+sharpest edge is 5 to 25 degrees), fine holes and slots beside
 big blocks, fillets and B-spline faces, assemblies of several solids touching each other.
 """
 import argparse
@@ -351,9 +352,58 @@ def splines(r):
     return [s], [0 if hole else 1], dict(L=L, sections=m, fillet=fr, hole=hole)
 
 
+def half_space_cut(s, point, normal, size):
+    """s without the side of the plane (point, normal) the normal points to: a box of side 4 size
+    lying on the plane, cut away."""
+    n = normal.normalize()
+    big = box(4 * size, 4 * size, 4 * size, (-2 * size, -2 * size, 0))
+    big.Placement = FreeCAD.Placement(point, FreeCAD.Rotation(V(0, 0, 1), n))
+    return solid_of(s.cut(big))
+
+
+def random_unit(r):
+    while True:
+        v = V(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1))
+        if 0.1 < v.Length <= 1:
+            return v.normalize()
+
+
+def polytope(r):
+    """A convex polytope with a sharp edge of 5 to 25 degrees: a block cut by 3 to 8 random
+    planes and by the two planes of a wedge meeting at that angle (a blade's edge, a chisel's
+    point). Sharp wedges of real parts leave holes, loose pieces and short edges (issue 32)."""
+    dims = [r.uniform(5, 40) for _ in range(3)]
+    s = box(*dims)
+    c = V(*[d / 2 for d in dims])
+    size = max(dims)
+    deg = r.uniform(5, 25)
+    d = random_unit(r)
+    b = random_unit(r)
+    b = (b - d * b.dot(d)).normalize()  # bisector into the material, perpendicular to the edge
+    m = d.cross(b)
+    a = math.radians(deg / 2)
+    apex = c - b * (min(dims) * r.uniform(0.3, 0.45))
+    for n in (-b * math.sin(a) + m * math.cos(a), -b * math.sin(a) - m * math.cos(a)):
+        s = half_space_cut(s, apex, n, size)
+    cuts = r.randint(3, 8)
+    for _ in range(cuts):
+        n = random_unit(r)
+        if n.dot(b) < -0.5:  # a plane across the wedge's edge would cut the edge off
+            n = -n
+        s = half_space_cut(s, c + n * (min(dims) * r.uniform(0.2, 0.5)), n, size)
+    return [s], [1], dict(dims=dims, angle_deg=deg, cuts=cuts, faces=len(s.Faces))
+
+
 FAMILIES = [("smd_chip", smd_chip), ("leaded", leaded), ("can", can), ("bracket", bracket),
             ("ribbed_plate", ribbed), ("holes_plate", holes_plate), ("wedge", wedge),
-            ("bosses_slots", bosses), ("assembly", assembly), ("spline_fillet", splines)]
+            ("bosses_slots", bosses), ("assembly", assembly), ("spline_fillet", splines),
+            ("polytope", polytope)]
+
+
+def seeds_of(family, seeds):
+    """The seeds among `seeds` whose part is of that family."""
+    names = [n for n, _ in FAMILIES]
+    return [s for s in seeds if names[s % len(names)] == family]
 
 
 def generate(seed):

@@ -47,13 +47,31 @@ def test_part(seed):
 
 
 def test_hard_ranges():
-    """The families reach the ranges of issue 32's hard real parts (over seeds 0-99): walls down
-    to 0.1 % of the part's size or thinner (cans), wedges of 10 to 25 degrees, some under 15."""
-    metas = [hard_parts.generate(s)[1] for s in range(2, 100, 10)]  # cans
+    """The families reach the ranges of issue 32's hard real parts (over seeds 0-109): walls down
+    to 0.1 % of the part's size or thinner (cans), wedges of 10 to 25 degrees, some under 15,
+    polytopes whose sharpest edge is the wedge's, 5 to 25 degrees, some under 10."""
+    import math
+    import Part
+    seeds = range(110)
+    metas = [hard_parts.generate(s)[1] for s in hard_parts.seeds_of("can", seeds)]
     assert min(m["params"]["wall_rel_diag"] for m in metas) < 0.001
-    metas = [hard_parts.generate(s)[1] for s in range(6, 100, 10)]  # wedges
+    metas = [hard_parts.generate(s)[1] for s in hard_parts.seeds_of("wedge", seeds)]
     assert min(m["params"]["angle_deg"] for m in metas) < 15
     assert all(10 <= m["params"]["angle_deg"] <= 25 for m in metas)
+    angles = []
+    for s in hard_parts.seeds_of("polytope", seeds):
+        shape, meta = hard_parts.generate(s)
+        solid = shape.Solids[0]
+        sharpest = 180.0
+        for e in solid.Edges:
+            f1, f2 = solid.ancestorsOfType(e, Part.Face)
+            p = e.valueAt(0.5 * (e.FirstParameter + e.LastParameter))
+            n1 = f1.normalAt(*f1.Surface.parameter(p))
+            n2 = f2.normalAt(*f2.Surface.parameter(p))
+            sharpest = min(sharpest, 180.0 - math.degrees(n1.getAngle(n2)))
+        assert abs(sharpest - meta["params"]["angle_deg"]) < 1e-6, (s, sharpest)
+        angles.append(sharpest)
+    assert min(angles) < 10 and all(5 <= a <= 25 for a in angles)
 
 
 @pytest.fixture(scope="module")
