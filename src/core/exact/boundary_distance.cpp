@@ -90,29 +90,76 @@ struct Cover {
   int nu = 0, nv = 1;                         // points[i * nv + j]
   double gap = 0;
 
-  // The grid's local minima of the distance to p (each no farther than its neighbours), as
-  // (squared distance, point index), nearest first: where OpenCASCADE's local search starts.
-  std::vector<std::pair<double, int>> minima(const Point3& p) const {
-    std::vector<double> d2(points.size());
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const Point3& q = points[k];
-      d2[k] = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]);
+  // Blocks of bu x bv grid points with their boxes (index_blocks): a query looks only into the
+  // blocks its bound reaches.
+  struct Block {
+    Box box;
+    int i0, i1, j0, j1;  // points[i * nv + j], i0 <= i < i1, j0 <= j < j1
+  };
+  std::vector<Block> blocks;
+  // Per query (one BoundaryDistance per thread): the distances in the blocks it reaches, the
+  // others' infinite (farther than any point it reaches).
+  mutable std::vector<double> d2;
+  mutable std::vector<int> reached;
+
+  void index_blocks() {
+    const int bu = nv == 1 ? 32 : 8, bv = nv == 1 ? 1 : 8;
+    blocks.clear();
+    for (int i0 = 0; i0 < nu; i0 += bu)
+      for (int j0 = 0; j0 < nv; j0 += bv) {
+        Block b{{0, 0, 0, 0, 0, 0}, i0, std::min(i0 + bu, nu), j0, std::min(j0 + bv, nv)};
+        const Point3& first = points[i0 * nv + j0];
+        b.box = {first[0], first[1], first[2], first[0], first[1], first[2]};
+        for (int i = b.i0; i < b.i1; ++i)
+          for (int j = b.j0; j < b.j1; ++j)
+            for (int k = 0; k < 3; ++k) {
+              b.box[k] = std::min(b.box[k], points[i * nv + j][k]);
+              b.box[k + 3] = std::max(b.box[k + 3], points[i * nv + j][k]);
+            }
+        blocks.push_back(b);
+      }
+    d2.assign(points.size(), std::numeric_limits<double>::infinity());
+  }
+
+  // The grid's local minima of the distance to p (each no farther than its neighbours) that may
+  // beat best2 (may_beat), as (squared distance, point index), nearest first: where the local
+  // search starts. A point out of that reach, or in a block out of it, is farther than every
+  // point within it, so leaving it out changes no other point's verdict: the list is the full
+  // one's head, which is all the callers read (they stop at the first that may not beat).
+  std::vector<std::pair<double, int>> minima(const Point3& p, double best2) const {
+    const double reach = std::sqrt(best2) + 2 * gap;
+    const double reach2 = reach * reach;
+    reached.clear();
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+      if (!(sq_distance(blocks[b].box, p) < reach2)) continue;
+      reached.push_back(static_cast<int>(b));
+      for (int i = blocks[b].i0; i < blocks[b].i1; ++i)
+        for (int j = blocks[b].j0; j < blocks[b].j1; ++j) {
+          const Point3& q = points[i * nv + j];
+          d2[i * nv + j] = (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]);
+        }
     }
     std::vector<std::pair<double, int>> out;
-    for (int i = 0; i < nu; ++i)
-      for (int j = 0; j < nv; ++j) {
-        const double here = d2[i * nv + j];
-        bool lowest = true;
-        for (int di = -1; di <= 1 && lowest; ++di)
-          for (int dj = -1; dj <= 1; ++dj) {
-            const int a = i + di, b = j + dj;
-            if ((di || dj) && a >= 0 && a < nu && b >= 0 && b < nv && d2[a * nv + b] < here) {
-              lowest = false;
-              break;
+    for (int b : reached)
+      for (int i = blocks[b].i0; i < blocks[b].i1; ++i)
+        for (int j = blocks[b].j0; j < blocks[b].j1; ++j) {
+          const double here = d2[i * nv + j];
+          if (!(here < reach2)) continue;
+          bool lowest = true;
+          for (int di = -1; di <= 1 && lowest; ++di)
+            for (int dj = -1; dj <= 1; ++dj) {
+              const int a = i + di, c = j + dj;
+              if ((di || dj) && a >= 0 && a < nu && c >= 0 && c < nv && d2[a * nv + c] < here) {
+                lowest = false;
+                break;
+              }
             }
-          }
-        if (lowest) out.push_back({here, i * nv + j});
-      }
+          if (lowest) out.push_back({here, i * nv + j});
+        }
+    for (int b : reached)
+      for (int i = blocks[b].i0; i < blocks[b].i1; ++i)
+        std::fill(d2.begin() + i * nv + blocks[b].j0, d2.begin() + i * nv + blocks[b].j1,
+                  std::numeric_limits<double>::infinity());
     std::sort(out.begin(), out.end());
     return out;
   }
@@ -318,8 +365,9 @@ struct BoundaryDistance::Impl {
     if (!f.cover.made) {
       BRepAdaptor_Surface& s = surface(f);
       f.cover = surface_cover(s, s.FirstUParameter(), s.LastUParameter(), s.FirstVParameter(), s.LastVParameter());
+      f.cover.index_blocks();
     }
-    for (const auto& [d2, k] : f.cover.minima(p)) {
+    for (const auto& [d2, k] : f.cover.minima(p, best2)) {
       if (!f.cover.may_beat(d2, best2)) break;
       double u = f.cover.params[k][0], v = f.cover.params[k][1];
       const double q2 = descend(f, p, u, v);
@@ -435,10 +483,11 @@ struct BoundaryDistance::Impl {
     if (e.curve->GetType() != GeomAbs_Line && e.curve->GetType() != GeomAbs_Circle) {
       if (!e.cover.made) {
         e.cover = curve_cover(*e.curve, e.first, e.last);
+        e.cover.index_blocks();
         e.local = std::make_unique<Extrema_LocateExtPC>();
         e.local->Initialize(*e.curve, e.first, e.last, Precision::PConfusion());
       }
-      for (const auto& [d2, k] : e.cover.minima(p)) {
+      for (const auto& [d2, k] : e.cover.minima(p, best2)) {
         if (!e.cover.may_beat(d2, best2)) break;
         take(gp_Pnt(e.cover.points[k][0], e.cover.points[k][1], e.cover.points[k][2]));
         e.local->Perform(gp, e.cover.params[k][0]);
