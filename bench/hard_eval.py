@@ -42,7 +42,7 @@ UNCOVERED = 0.01  # of the diagonal
 KEY = {"smd_chip": ["L", "cap_wall", "cup"], "leaded": ["L", "lead", "kind", "n"],
        "can": ["R", "wall", "wall_rel_diag", "bottom", "holes"], "bracket": ["L", "t", "t_rel", "gusset", "holes"],
        "ribbed_plate": ["L", "rib", "rib_rel", "ribs", "cross_ribs"],
-       "holes_plate": ["L", "holes", "hole", "kind"], "wedge": ["L", "angle_deg", "finish", "hole"],
+       "holes_plate": ["L", "holes", "hole", "kind"], "wedge": ["L", "angle_deg", "finish", "hole"], "polytope": ["angle_deg", "faces"],
        "bosses_slots": ["L", "features", "through_holes"], "assembly": ["kinds"],
        "spline_fillet": ["L", "sections", "fillet", "hole"]}
 

@@ -148,7 +148,6 @@ constexpr double kSampleBudget = 3.0;
 // How far from its edges a mirrored thin wall is sampled finer, in spacings.
 constexpr double kJunctionReach = 2.0;
 constexpr double kGradation = 0.5;
-constexpr double kSharpWedgeDot = -0.95;  // normals of a wedge of 18 degrees
 
 struct SolidSampling {
   Samples samples;

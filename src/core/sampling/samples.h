@@ -33,6 +33,10 @@ struct FaceDomain {
   double u_scale = 1.0, v_scale = 1.0;           ///< lengths per unit parameter, to make uv isotropic
 };
 
+/// A convex edge whose two faces' outward normals meet with a dot product below this is a sharp
+/// wedge (under 18 degrees): the sampling, the thin-wall check and the inner axis treat it apart.
+constexpr double kSharpWedgeDot = -0.95;
+
 struct Samples {
   std::vector<Point3> points;
   std::vector<SampleTag> tag;
