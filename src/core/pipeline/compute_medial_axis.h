@@ -56,6 +56,11 @@ struct SolidStats {
   std::size_t radii_corrected = 0;
   std::size_t vertices_moved_inside = 0;
   std::size_t mirrored_samples = 0;  ///< face samples placed as mirrors across thin walls
+  /// Share of the samples on sharp convex edges (faces turning by more than 10 degrees) within a
+  /// spacing of the axis, and the edges reached along less than 98 % of their length (a warning
+  /// names them): convex_edge_reach.h
+  double convex_edges_reached = 1.0;
+  std::size_t short_convex_edges = 0;
   std::size_t welded_vertices = 0;  ///< output vertices closer than 1e-9 of the diagonal to another, merged
 };
 

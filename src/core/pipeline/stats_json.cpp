@@ -93,6 +93,8 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += ", \"radius_mean_excess\": " + number(s.radius_mean_excess);
     j += ", \"radii_corrected\": " + std::to_string(s.radii_corrected);
     j += ", \"vertices_moved_inside\": " + std::to_string(s.vertices_moved_inside);
+    j += ", \"convex_edges_reached\": " + number(s.convex_edges_reached);
+    j += ", \"short_convex_edges\": " + std::to_string(s.short_convex_edges);
     j += ", \"thinnest_wall\": " + number(s.thinnest_wall);
     // Where: null with the wall (none found).
     const bool found = std::isfinite(s.thinnest_wall);
