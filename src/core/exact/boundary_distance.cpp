@@ -1,4 +1,5 @@
 #include "boundary_distance.h"
+#include "box_tree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,7 @@
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <gp_Pln.hxx>
@@ -31,8 +33,6 @@ namespace cadmedial {
 
 namespace {
 
-using Box = std::array<double, 6>;  // min x y z, max x y z
-
 Box box_of(const TopoDS_Shape& s, double enlarge) {
   Bnd_Box b;
   BRepBndLib::Add(s, b, false);  // from the geometry: a triangulation's box can fall short of it
@@ -41,17 +41,6 @@ Box box_of(const TopoDS_Shape& s, double enlarge) {
   Box out;
   b.Get(out[0], out[1], out[2], out[3], out[4], out[5]);
   return out;
-}
-
-// Squared distance from p to the box (0 inside); infinite for an empty box.
-double sq_distance(const Box& b, const Point3& p) {
-  if (b[0] > b[3]) return std::numeric_limits<double>::infinity();
-  double s = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double d = std::max({b[k] - p[k], 0.0, p[k] - b[k + 3]});
-    s += d * d;
-  }
-  return s;
 }
 
 double sq_dist(const gp_Pnt& a, const Point3& p) {
@@ -264,6 +253,8 @@ struct BoundaryDistance::Impl {
   };
   std::vector<Face> faces;
   std::vector<Edge> edges;
+  BoxTree face_tree, edge_tree;
+  std::vector<int> candidates;  // scratch of nearest()
 
   explicit Impl(const TopoDS_Solid& solid) {
     TopTools_IndexedMapOfShape fmap, emap;
@@ -287,6 +278,12 @@ struct BoundaryDistance::Impl {
       BRep_Tool::Range(e, ed.first, ed.last);
       edges.push_back(std::move(ed));
     }
+    std::vector<Box> boxes;
+    for (const Face& f : faces) boxes.push_back(f.box);
+    face_tree = BoxTree(boxes);
+    boxes.clear();
+    for (const Edge& e : edges) boxes.push_back(e.box);
+    edge_tree = BoxTree(boxes);
   }
 
   BRepAdaptor_Surface& surface(Face& f) {
@@ -297,13 +294,21 @@ struct BoundaryDistance::Impl {
   bool in_face(Face& f, double u, double v) {
     if (!f.inside) {
       f.inside = std::make_unique<BRepTopAdaptor_FClass2d>(f.face, Precision::PConfusion());
-      // One lattice cell over the face's bounds: exact() needs no finer one.
+      // A lattice of about 16 cells per wire over the face's bounds: a point in a cell no wire's
+      // box reaches is answered by its region, without testing the wires. exact() alone tested
+      // every wire for every point: a plate with 248 holes spent 49 s of 79 in the radii, most of
+      // it there.
       double u0, u1, v0, v1;
       BRepTools::UVBounds(f.face, u0, u1, v0, v1);
-      f.answers = std::make_unique<LatticeClassifier>(*f.inside, surface(f), UvLattice{u0, v0, u1 - u0, v1 - v0, 1, 1});
+      int wires = 0;
+      for (TopExp_Explorer w(f.face, TopAbs_WIRE); w.More(); w.Next()) ++wires;
+      const long n = std::clamp(static_cast<long>(std::ceil(8.0 * std::sqrt(wires))), 1L, 256L);
+      f.answers = std::make_unique<LatticeClassifier>(*f.inside, surface(f),
+                                                      UvLattice{u0, v0, (u1 - u0) / n, (v1 - v0) / n, n, n});
     }
     const gp_Pnt2d uv(u, v);
-    const LatticeClassifier::Answer a = f.answers->exact(uv);
+    LatticeClassifier::Answer a = f.answers->classify(uv);
+    if (a == LatticeClassifier::Answer::Ask) a = f.answers->exact(uv);
     if (a != LatticeClassifier::Answer::Ask) return a == LatticeClassifier::Answer::In;
     const TopAbs_State s = f.inside->Perform(uv);
     return s == TopAbs_IN || s == TopAbs_ON;
@@ -506,10 +511,14 @@ struct BoundaryDistance::Impl {
     double best2 = bound * bound;
     // Edges first: a point near a convex edge, where most radii are off, settles there, and the
     // smaller bound spares most faces their projection.
-    for (std::size_t i = 0; i < edges.size(); ++i)
-      if (sq_distance(edges[i].box, p) < best2) ask_edge(static_cast<int>(i), p, best2, out);
-    for (std::size_t i = 0; i < faces.size(); ++i)
-      if (sq_distance(faces[i].box, p) < best2) ask_face(static_cast<int>(i), p, best2, out);
+    // The boxes within the bound, from the trees, then asked in index order as the bound
+    // shrinks: the same answer as a scan of every box.
+    edge_tree.near(p, best2, candidates);
+    for (int i : candidates)
+      if (sq_distance(edges[i].box, p) < best2) ask_edge(i, p, best2, out);
+    face_tree.near(p, best2, candidates);
+    for (int i : candidates)
+      if (sq_distance(faces[i].box, p) < best2) ask_face(i, p, best2, out);
     out.distance = std::sqrt(best2);
     if (out.face < 0 && out.edge < 0) out.point = p;
     return out;
