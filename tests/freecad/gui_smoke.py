@@ -55,6 +55,37 @@ def coloured_pixels(path):
     return coloured
 
 
+def cut_off(form):
+    """What of the panel `form` is cut off at its present width: a visible widget reaching past
+    its right edge, a one-line label, check box, button or list shorter than its text, a spin
+    box whose line shows less than its text, a wrapped label lower than its text needs."""
+    found = []
+    for widget in form.findChildren(QtWidgets.QWidget):
+        if not widget.isVisibleTo(form) or widget.width() == 0:
+            continue
+        name = widget.metaObject().className()
+        text = getattr(widget, "text", lambda: "")() if not isinstance(widget, QtWidgets.QAbstractSpinBox) else widget.text()
+        what = "%s %r" % (name, text)
+        right = widget.mapTo(form, QtCore.QPoint(widget.width(), 0)).x()
+        if right > form.width():
+            found.append("%s reaches x %d of %d" % (what, right, form.width()))
+        if isinstance(widget, QtWidgets.QLabel):
+            if widget.wordWrap():
+                if widget.heightForWidth(widget.width()) > widget.height():
+                    found.append("%s: %d px high, needs %d" % (what, widget.height(), widget.heightForWidth(widget.width())))
+            elif widget.width() < widget.sizeHint().width():
+                found.append("%s: %d px wide, needs %d" % (what, widget.width(), widget.sizeHint().width()))
+        elif isinstance(widget, (QtWidgets.QAbstractButton, QtWidgets.QComboBox)):
+            if widget.width() < widget.sizeHint().width():
+                found.append("%s: %d px wide, needs %d" % (what, widget.width(), widget.sizeHint().width()))
+        elif isinstance(widget, QtWidgets.QAbstractSpinBox):
+            line = widget.findChild(QtWidgets.QLineEdit)
+            needed = line.fontMetrics().horizontalAdvance(line.text())
+            if line.width() < needed:
+                found.append("%s: its line %d px wide, the text %d" % (what, line.width(), needed))
+    return found
+
+
 def run():
     mw = Gui.getMainWindow()
     mw.setGeometry(QtGui.QGuiApplication.primaryScreen().availableGeometry())
@@ -90,6 +121,15 @@ def run():
     report["panel_width"] = panel.form.width()
     report["panel_min_width"] = panel.form.minimumSizeHint().width()
     report["stop_visible"] = panel.stop.isVisible() and panel.stop.width() > 20
+    # The Min feature row: a length, "none" at 0; shown whole at this width with a value too.
+    report["min_feature_default"] = [panel.min_feature.value(), panel.min_feature.text()]
+    panel.min_feature.setValue(0.125)
+    wait_until(panel.estimate_idle, 60, "the estimate")
+    settle(0.2)
+    report["min_feature_row"] = {
+        "label": panel.form.findChild(QtWidgets.QGroupBox).layout().labelForField(panel.min_feature).text(),
+        "text": panel.min_feature.text(), "visible": panel.min_feature.isVisible()}
+    report["panel_cut_off"] = cut_off(panel.form)
     panel.form.grab().save(os.path.join(OUT, "panel.png"))
     panel.make_shape.setChecked(True)
     panel.accept()
@@ -104,7 +144,8 @@ def run():
         "status": feature.Status, "points": feature.Mesh.CountPoints,
         "facets": feature.Mesh.CountFacets, "vertex_count": feature.VertexCount,
         "colors": len(feature.RadiusColors), "coloring": vobj.Coloring,
-        "samples": feature.Samples, "refine": feature.Refine, "radius": [feature.RadiusMin.Value, feature.RadiusMax.Value],
+        "samples": feature.Samples, "refine": feature.Refine,
+        "min_feature": feature.MinFeature.Value, "radius": [feature.RadiusMin.Value, feature.RadiusMax.Value],
         "proxy": type(vobj.Proxy).__module__ + "." + type(vobj.Proxy).__name__,
         "source_display": box.ViewObject.DisplayMode}
     shape = doc.getObject("MedialShape")
@@ -219,12 +260,21 @@ def run():
     panel = task_panel.active_panel
     report["edit_panel_for"] = panel.edit.Name if panel and panel.edit else None
     report["edit_mode"] = panel.mode_key()
+    report["edit_min_feature"] = panel.min_feature.value()
     panel.theta.setValue(10.0)
     panel.refine.setChecked(False)
+    panel.min_feature.setValue(0.25)
     panel.accept()
     settle(0.5)
     report["edited"] = {"theta": feature.Theta, "refine": feature.Refine, "status": feature.Status,
+                        "min_feature": feature.MinFeature.Value,
                         "dialog_open": Gui.Control.activeDialog()}
+    # Opened again, the panel shows what was saved.
+    Gui.ActiveDocument.setEdit(feature.Name)
+    settle(0.3)
+    report["reedit_min_feature"] = task_panel.active_panel.min_feature.value()
+    task_panel.active_panel.reject()
+    settle(0.3)
 
     # The console one-liner gets the coloured view provider too.
     cube = doc.addObject("Part::Box", "Cube")
