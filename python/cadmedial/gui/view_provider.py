@@ -63,9 +63,12 @@ class ViewProviderMedialAxis(_StatelessProxy):
     def updateData(self, obj, prop):
         if prop == "RadiusColors" and obj.ViewObject is not None:
             # Switch colouring off and on so that the new colour list is applied to the new mesh.
+            # New colours for the same mesh (a new colour range) need it too: without it the
+            # view kept the old colours (tests/freecad/test_color_range_gui.py).
             obj.ViewObject.Coloring = False
             obj.ViewObject.Coloring = True
-        if prop in ("RadiusColors", "VertexCount", "RadiusMax", "Label"):
+        if prop in ("RadiusColors", "VertexCount", "RadiusMin", "RadiusMax", "Label",
+                    "AutoColorRange", "ColorRangeMin", "ColorRangeMax"):
             _refresh_later(obj.Document)
 
     def onChanged(self, vobj, prop):

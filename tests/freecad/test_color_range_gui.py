@@ -1,0 +1,56 @@
+"""The radius legend shows a colour range set by hand, in the real FreeCAD under Xvfb
+(gui_color_range.py): its five ticks are the range's, the automatic range brings the radii's
+back, and a reopened document shows the set range. Skips (saying why) without xvfb-run or the
+FreeCAD GUI."""
+
+import pytest
+
+from cadmedial.colormap import STOPS
+from conftest import run_gui_script
+
+MIDDLE = STOPS[len(STOPS) // 2].tolist()
+
+
+@pytest.fixture(scope="module")
+def shown(tmp_path_factory):
+    report, _, _ = run_gui_script(tmp_path_factory, "gui_color_range.py", "color_range.json",
+                                  keep=("range_automatic.png", "range_set.png", "range_reopened.png",
+                                        "color_range.json"))
+    return report
+
+
+def ticks(low, high):
+    return ["– %.3g mm" % (high - i * (high - low) / 4) for i in range(5)]
+
+
+def test_ticks_show_the_radii_by_default(shown):
+    low, high = shown["radius"]
+    assert high == pytest.approx(5.0, abs=0.5)  # half the box's 10 mm side
+    assert shown["automatic"]["ticks"] == ticks(low, high)
+    assert "radii" not in shown["automatic"]["lines"]
+
+
+def test_ticks_show_a_set_range(shown):
+    assert shown["set_properties"] == [False, 1.0, 3.0, False]  # set, and nothing to recompute
+    assert shown["set"]["ticks"] == ["– 3 mm", "– 2.5 mm", "– 2 mm", "– 1.5 mm", "– 1 mm"]
+    # The object's line gives the range, and the radii beyond it (their colours clamp).
+    low, high = shown["radius"]
+    assert "1 – 3 mm" in shown["set"]["lines"]
+    assert "radii %.4g – %.4g mm" % (low, high) in shown["set"]["lines"]
+
+
+def test_the_view_draws_the_set_range_s_colours(shown):
+    # The point nearest radius 2, the middle of 1..3, is drawn in the map's middle colour; in the
+    # automatic range 0..5 it is at 0.4 of the map, another colour.
+    assert abs(shown["middle_radius"] - 2.0) < 0.02
+    assert max(abs(a - b) for a, b in zip(shown["middle_shown"], MIDDLE)) < 0.03
+    assert max(abs(a - b) for a, b in zip(shown["middle_shown_automatic"], MIDDLE)) > 0.05
+
+
+def test_automatic_range_comes_back_on_the_legend(shown):
+    assert shown["automatic_again"] == shown["automatic"]
+
+
+def test_reopened_document_shows_the_set_range(shown):
+    assert shown["reopened"] is not None
+    assert shown["reopened"]["ticks"] == ["– 3 mm", "– 2.5 mm", "– 2 mm", "– 1.5 mm", "– 1 mm"]
