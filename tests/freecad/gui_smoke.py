@@ -297,16 +297,36 @@ def run():
     plate.Placement.Base = App.Vector(0, -80, 0)
     doc.recompute()
     thin = cadmedial.app.make_medial_axis(plate, samples=2000)
+    # Nothing selected: the click goes to the thinnest wall of the visible medial axes.
     Gui.Selection.clearSelection()
-    Gui.Selection.addSelection(thin)
+    view = Gui.ActiveDocument.ActiveView
+    view.viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
     settle(0.3)
+    report["thinnest_wall_active_unselected"] = Gui.Command.get("MedialAxis_ThinnestWall").isActive()
     Gui.runCommand("MedialAxis_ThinnestWall")
     settle(0.5)
-    camera = Gui.ActiveDocument.ActiveView.getCamera()
+    from pivy import coin
+    camera = view.getCameraNode()
+    direction = camera.orientation.getValue().multVec(coin.SbVec3f(0, 0, -1))
+    focal = camera.position.getValue() + direction * camera.focalDistance.getValue()
+    from cadmedial.gui.wall_marker import NODE_NAME, marker
+    marks = coin.SoSearchAction()
+    marks.setName(NODE_NAME)
+    marks.setInterest(coin.SoSearchAction.ALL)
+    marks.apply(view.getSceneGraph())
     report["thinnest_wall"] = {"thickness": thin.ThinnestWall.Value,
                                "at": [thin.ThinnestWallAt.x, thin.ThinnestWallAt.y, thin.ThinnestWallAt.z],
-                               "camera": camera}
-    Gui.ActiveDocument.ActiveView.saveImage(os.path.join(OUT, "thinnest_wall.png"), 800, 600, "White")
+                               "camera": view.getCamera(), "focal_point": list(focal.getValue()),
+                               "marks_in_view": marks.getPaths().getLength(),
+                               "mark_at": list(marker.point) if marker.point else None,
+                               "status": mw.statusBar().currentMessage()}
+    view.saveImage(os.path.join(OUT, "thinnest_wall.png"), 800, 600, "White")
+    # Again: still one mark.
+    Gui.runCommand("MedialAxis_ThinnestWall")
+    marks.apply(view.getSceneGraph())
+    report["thinnest_wall"]["marks_after_second_click"] = marks.getPaths().getLength()
+    marker.clear()
     doc.removeObject(thin.Name)
     doc.removeObject(plate.Name)
     doc.recompute()

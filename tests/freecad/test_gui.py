@@ -137,8 +137,20 @@ def test_console_one_liner_gets_the_coloured_view(smoke):
 
 
 def test_one_click_zooms_onto_the_thinnest_wall(smoke):
+    # Nothing selected: the one click goes to the 40 x 40 x 1 plate's wall, the thinnest shown.
+    assert smoke["thinnest_wall_active_unselected"] is True
     wall = smoke["thinnest_wall"]
     assert wall["thickness"] == pytest.approx(1.0, rel=0.05)
-    # The camera looks at the wall with a field 40 wall thicknesses high.
+    # The camera looks at the wall (its focal point there) with a field 40 wall thicknesses high.
+    gap = sum((f - a) ** 2 for f, a in zip(wall["focal_point"], wall["at"])) ** 0.5
+    assert gap < 1e-3 * wall["thickness"], (wall["focal_point"], wall["at"])
     height = float(re.search(r"height ([-\d.e]+)", wall["camera"]).group(1))
     assert height == pytest.approx(40.0 * wall["thickness"], rel=0.01)
+    assert "thinnest wall" in wall["status"]
+
+
+def test_the_thinnest_wall_is_marked_once(smoke):
+    wall = smoke["thinnest_wall"]
+    assert wall["marks_in_view"] == 1
+    assert wall["mark_at"] == pytest.approx(wall["at"])
+    assert wall["marks_after_second_click"] == 1

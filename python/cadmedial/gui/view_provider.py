@@ -9,6 +9,7 @@ from PySide2 import QtCore
 
 from . import legend
 from .icons import icon_path
+from .wall_marker import marker
 
 
 class _StatelessProxy:
@@ -77,6 +78,8 @@ class ViewProviderMedialAxis(_StatelessProxy):
 
     def onDelete(self, vobj, subelements):
         legend.refresh(vobj.Object.Document, leaving=vobj.Object)
+        if marker.owner is vobj.Object:  # its thinnest wall's mark goes with it
+            marker.clear()
         return True
 
     def setEdit(self, vobj, mode=0):
