@@ -13,6 +13,7 @@ import FreeCADGui as Gui
 from PySide2 import QtCore, QtGui, QtWidgets
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # gui_heartbeat beside this script
+from gui_checks import cut_off  # noqa: E402
 from gui_heartbeat import Heartbeat, run_and_report  # noqa: E402
 
 OUT = os.environ["CADMEDIAL_GUI_OUT"]
@@ -123,6 +124,29 @@ def run():
     report["auto_seconds"], report["auto_stall_ms"] = timed_set(beat, automatic)
     report["automatic_again"] = legend_state(doc)
     report["middle_shown_automatic"] = shown_colour(feature.ViewObject, middle)
+
+    # The task panel on the object: its Colours rows show the range in use and set one.
+    Gui.ActiveDocument.setEdit(feature.Name)
+    settle(0.5)
+    from cadmedial.gui import task_panel
+    rows = task_panel.active_panel.colors
+    report["rows_loaded"] = [rows.automatic.isChecked(), rows.low.isEnabled(), rows.low.value(),
+                             rows.high.value()]
+    rows.automatic.setChecked(False)
+    rows.low.setValue(1.5)
+    rows.low.editingFinished.emit()
+    rows.high.setValue(2.5)
+    rows.high.editingFinished.emit()
+    settle(0.5)
+    report["rows_set"] = {"object": [feature.AutoColorRange, feature.ColorRangeMin.Value,
+                                     feature.ColorRangeMax.Value, "Touched" in feature.State],
+                          "legend": legend_state(doc), "shown": shown_colour(feature.ViewObject, middle),
+                          "panel_width": task_panel.active_panel.form.width(),
+                          "cut_off": cut_off(task_panel.active_panel.form)}
+    task_panel.active_panel.form.grab().save(os.path.join(OUT, "range_panel.png"))
+    task_panel.active_panel.reject()
+    settle(0.3)
+    report["rows_dialog_open_after_cancel"] = Gui.Control.activeDialog()
 
     set_range()
     settle(0.5)

@@ -14,7 +14,7 @@ MIDDLE = STOPS[len(STOPS) // 2].tolist()
 @pytest.fixture(scope="module")
 def shown(tmp_path_factory):
     report, _, _ = run_gui_script(tmp_path_factory, "gui_color_range.py", "color_range.json",
-                                  keep=("range_automatic.png", "range_set.png", "range_reopened.png",
+                                  keep=("range_automatic.png", "range_set.png", "range_reopened.png", "range_panel.png",
                                         "color_range.json"))
     return report
 
@@ -49,6 +49,18 @@ def test_the_view_draws_the_set_range_s_colours(shown):
 
 def test_automatic_range_comes_back_on_the_legend(shown):
     assert shown["automatic_again"] == shown["automatic"]
+
+
+def test_the_edit_panel_sets_the_range_and_fits(shown):
+    low, high = shown["radius"]
+    assert shown["rows_loaded"] == [True, False, pytest.approx(low, abs=1e-4), pytest.approx(high, abs=1e-4)]
+    rows = shown["rows_set"]
+    assert rows["object"] == [False, 1.5, 2.5, False]
+    assert rows["legend"]["ticks"] == ["– 2.5 mm", "– 2.25 mm", "– 2 mm", "– 1.75 mm", "– 1.5 mm"]
+    # Radius 2 is the middle of 1.5..2.5 too.
+    assert max(abs(a - b) for a, b in zip(rows["shown"], MIDDLE)) < 0.03
+    assert rows["panel_width"] <= 240 and rows["cut_off"] == [], rows
+    assert shown["rows_dialog_open_after_cancel"] is False
 
 
 def test_reopened_document_shows_the_set_range(shown):

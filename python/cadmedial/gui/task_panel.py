@@ -10,6 +10,7 @@ import cadmedial
 from cadmedial.app import make_medial_axis
 from cadmedial.app.medial_axis import min_feature_of
 
+from .color_range_rows import ColorRangeRows
 from .icons import icon_path
 from .worker import ComputeJob, Job
 
@@ -140,6 +141,10 @@ class TaskPanelMedialAxis:
         rows.addRow("Theta", self.theta)
         rows.addRow("Rho", self.rho)
         layout.addWidget(selection)
+
+        if self.edit is not None:  # a result to recolour: its colour range
+            self.colors = ColorRangeRows(self.edit, _form_layout)
+            layout.addWidget(self.colors.group)
 
         self.make_shape = QtWidgets.QCheckBox("Also make a Part shape")
         self.make_shape.setToolTip("A Part object of planar faces, one per medial polygon")
