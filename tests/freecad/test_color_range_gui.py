@@ -1,7 +1,10 @@
 """The radius legend shows a colour range set by hand, in the real FreeCAD under Xvfb
 (gui_color_range.py): its five ticks are the range's, the automatic range brings the radii's
-back, and a reopened document shows the set range. Skips (saying why) without xvfb-run or the
+back, a reopened document shows the set range, and the edit panel's Colours rows set one and
+fit the Combo View (also at 200 % scaling). Skips (saying why) without xvfb-run or the
 FreeCAD GUI."""
+
+import os
 
 import pytest
 
@@ -16,6 +19,21 @@ def shown(tmp_path_factory):
     report, _, _ = run_gui_script(tmp_path_factory, "gui_color_range.py", "color_range.json",
                                   keep=("range_automatic.png", "range_set.png", "range_reopened.png", "range_panel.png",
                                         "color_range.json"))
+    return report
+
+
+@pytest.fixture(scope="module")
+def shown_at_200_percent(tmp_path_factory):
+    # The same script with Qt's user interface scaled 2 times (a 200 % screen setting).
+    before = os.environ.get("QT_SCALE_FACTOR")
+    os.environ["QT_SCALE_FACTOR"] = "2"
+    try:
+        report, _, _ = run_gui_script(tmp_path_factory, "gui_color_range.py", "color_range.json")
+    finally:
+        if before is None:
+            del os.environ["QT_SCALE_FACTOR"]
+        else:
+            os.environ["QT_SCALE_FACTOR"] = before
     return report
 
 
@@ -66,3 +84,9 @@ def test_the_edit_panel_sets_the_range_and_fits(shown):
 def test_reopened_document_shows_the_set_range(shown):
     assert shown["reopened"] is not None
     assert shown["reopened"]["ticks"] == ["– 3 mm", "– 2.5 mm", "– 2 mm", "– 1.5 mm", "– 1 mm"]
+
+
+def test_the_edit_panel_fits_at_200_percent(shown_at_200_percent):
+    # Widths in Qt's scaled pixels: the Combo View keeps its default width, every row shows whole.
+    rows = shown_at_200_percent["rows_set"]
+    assert rows["panel_width"] <= 240 and rows["cut_off"] == [], rows
