@@ -2,8 +2,6 @@
 size on screen at any zoom, and a translucent red ball as thick as the wall around it, so that
 the place shows even when the view is turned away from it. One mark at a time."""
 
-from pivy import coin
-
 NODE_NAME = "cadmedial_thinnest_wall"
 RGB = (0.9, 0.1, 0.1)
 
@@ -20,6 +18,7 @@ class WallMarker:
 
     def show(self, view, point, thickness, owner=None):
         """Puts the mark at point (x, y, z) with a ball of diameter thickness, in view."""
+        from pivy import coin  # here: the workbench loads even where pivy is missing
         self.clear()
         self.owner = owner
         root = coin.SoAnnotation()
