@@ -3,12 +3,16 @@
 # plus screenshots. Exits FreeCAD itself with os._exit (status 0 = the script ran to its end).
 import json
 import os
+import sys
 import time
 import traceback
 
 import FreeCAD as App
 import FreeCADGui as Gui
 from PySide2 import QtCore, QtGui, QtWidgets
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))  # gui_checks beside this script
+from gui_checks import cut_off  # noqa: E402
 
 OUT = os.environ["CADMEDIAL_GUI_OUT"]
 report = {"steps": []}
@@ -90,6 +94,15 @@ def run():
     report["panel_width"] = panel.form.width()
     report["panel_min_width"] = panel.form.minimumSizeHint().width()
     report["stop_visible"] = panel.stop.isVisible() and panel.stop.width() > 20
+    # The Min feature row: a length, "none" at 0; shown whole at this width with a value too.
+    report["min_feature_default"] = [panel.min_feature.value(), panel.min_feature.text()]
+    panel.min_feature.setValue(0.125)
+    wait_until(panel.estimate_idle, 60, "the estimate")
+    settle(0.2)
+    report["min_feature_row"] = {
+        "label": panel.form.findChild(QtWidgets.QGroupBox).layout().labelForField(panel.min_feature).text(),
+        "text": panel.min_feature.text(), "visible": panel.min_feature.isVisible()}
+    report["panel_cut_off"] = cut_off(panel.form)
     panel.form.grab().save(os.path.join(OUT, "panel.png"))
     panel.make_shape.setChecked(True)
     panel.accept()
@@ -104,7 +117,8 @@ def run():
         "status": feature.Status, "points": feature.Mesh.CountPoints,
         "facets": feature.Mesh.CountFacets, "vertex_count": feature.VertexCount,
         "colors": len(feature.RadiusColors), "coloring": vobj.Coloring,
-        "samples": feature.Samples, "refine": feature.Refine, "radius": [feature.RadiusMin.Value, feature.RadiusMax.Value],
+        "samples": feature.Samples, "refine": feature.Refine,
+        "min_feature": feature.MinFeature.Value, "radius": [feature.RadiusMin.Value, feature.RadiusMax.Value],
         "proxy": type(vobj.Proxy).__module__ + "." + type(vobj.Proxy).__name__,
         "source_display": box.ViewObject.DisplayMode}
     shape = doc.getObject("MedialShape")
@@ -219,12 +233,21 @@ def run():
     panel = task_panel.active_panel
     report["edit_panel_for"] = panel.edit.Name if panel and panel.edit else None
     report["edit_mode"] = panel.mode_key()
+    report["edit_min_feature"] = panel.min_feature.value()
     panel.theta.setValue(10.0)
     panel.refine.setChecked(False)
+    panel.min_feature.setValue(0.25)
     panel.accept()
     settle(0.5)
     report["edited"] = {"theta": feature.Theta, "refine": feature.Refine, "status": feature.Status,
+                        "min_feature": feature.MinFeature.Value,
                         "dialog_open": Gui.Control.activeDialog()}
+    # Opened again, the panel shows what was saved.
+    Gui.ActiveDocument.setEdit(feature.Name)
+    settle(0.3)
+    report["reedit_min_feature"] = task_panel.active_panel.min_feature.value()
+    task_panel.active_panel.reject()
+    settle(0.3)
 
     # The console one-liner gets the coloured view provider too.
     cube = doc.addObject("Part::Box", "Cube")
@@ -247,16 +270,36 @@ def run():
     plate.Placement.Base = App.Vector(0, -80, 0)
     doc.recompute()
     thin = cadmedial.app.make_medial_axis(plate, samples=2000)
+    # Nothing selected: the click goes to the thinnest wall of the visible medial axes.
     Gui.Selection.clearSelection()
-    Gui.Selection.addSelection(thin)
+    view = Gui.ActiveDocument.ActiveView
+    view.viewIsometric()
+    Gui.SendMsgToActiveView("ViewFit")
     settle(0.3)
+    report["thinnest_wall_active_unselected"] = Gui.Command.get("MedialAxis_ThinnestWall").isActive()
     Gui.runCommand("MedialAxis_ThinnestWall")
     settle(0.5)
-    camera = Gui.ActiveDocument.ActiveView.getCamera()
+    from pivy import coin
+    camera = view.getCameraNode()
+    direction = camera.orientation.getValue().multVec(coin.SbVec3f(0, 0, -1))
+    focal = camera.position.getValue() + direction * camera.focalDistance.getValue()
+    from cadmedial.gui.wall_marker import NODE_NAME, marker
+    marks = coin.SoSearchAction()
+    marks.setName(NODE_NAME)
+    marks.setInterest(coin.SoSearchAction.ALL)
+    marks.apply(view.getSceneGraph())
     report["thinnest_wall"] = {"thickness": thin.ThinnestWall.Value,
                                "at": [thin.ThinnestWallAt.x, thin.ThinnestWallAt.y, thin.ThinnestWallAt.z],
-                               "camera": camera}
-    Gui.ActiveDocument.ActiveView.saveImage(os.path.join(OUT, "thinnest_wall.png"), 800, 600, "White")
+                               "camera": view.getCamera(), "focal_point": list(focal.getValue()),
+                               "marks_in_view": marks.getPaths().getLength(),
+                               "mark_at": list(marker.point) if marker.point else None,
+                               "status": mw.statusBar().currentMessage()}
+    view.saveImage(os.path.join(OUT, "thinnest_wall.png"), 800, 600, "White")
+    # Again: still one mark.
+    Gui.runCommand("MedialAxis_ThinnestWall")
+    marks.apply(view.getSceneGraph())
+    report["thinnest_wall"]["marks_after_second_click"] = marks.getPaths().getLength()
+    marker.clear()
     doc.removeObject(thin.Name)
     doc.removeObject(plate.Name)
     doc.recompute()

@@ -99,6 +99,18 @@ def test_panel_fits_the_combo_view(smoke):
     # FreeCAD's default Combo View is about 240 px wide: the panel needs no more, Stop shows.
     assert smoke["panel_min_width"] <= 240, smoke["panel_min_width"]
     assert smoke["stop_visible"] is True
+    # Every row, Min feature's too, is shown whole at that width.
+    assert smoke["panel_width"] <= 240, smoke["panel_width"]
+    assert smoke["panel_cut_off"] == [], smoke["panel_cut_off"]
+    assert smoke["min_feature_row"] == {"label": "Min feature", "text": "0.1250 mm", "visible": True}
+
+
+def test_min_feature_goes_from_the_panel_to_the_object_and_back(smoke):
+    assert smoke["min_feature_default"] == [0.0, "none"]  # 0: no minimum
+    assert smoke["feature"]["min_feature"] == 0.125  # a new object gets it
+    assert smoke["edit_min_feature"] == 0.125  # editing loads it
+    assert smoke["edited"]["min_feature"] == 0.25  # and saves it
+    assert smoke["reedit_min_feature"] == 0.25
 
 
 def test_picked_point_shows_its_radius(smoke):
@@ -113,7 +125,8 @@ def test_reopened_document_keeps_its_colours(smoke):
 def test_task_panel_edits_an_existing_feature(smoke):
     assert smoke["edit_panel_for"] == "MedialAxis"
     assert smoke["edit_mode"] == "samples"  # the feature was made with 4000 samples
-    assert smoke["edited"] == {"theta": 10.0, "refine": False, "status": "ok", "dialog_open": False}
+    assert smoke["edited"] == {"theta": 10.0, "refine": False, "status": "ok", "min_feature": 0.25,
+                               "dialog_open": False}
 
 
 def test_console_one_liner_gets_the_coloured_view(smoke):
@@ -124,8 +137,20 @@ def test_console_one_liner_gets_the_coloured_view(smoke):
 
 
 def test_one_click_zooms_onto_the_thinnest_wall(smoke):
+    # Nothing selected: the one click goes to the 40 x 40 x 1 plate's wall, the thinnest shown.
+    assert smoke["thinnest_wall_active_unselected"] is True
     wall = smoke["thinnest_wall"]
     assert wall["thickness"] == pytest.approx(1.0, rel=0.05)
-    # The camera looks at the wall with a field 40 wall thicknesses high.
+    # The camera looks at the wall (its focal point there) with a field 40 wall thicknesses high.
+    gap = sum((f - a) ** 2 for f, a in zip(wall["focal_point"], wall["at"])) ** 0.5
+    assert gap < 1e-3 * wall["thickness"], (wall["focal_point"], wall["at"])
     height = float(re.search(r"height ([-\d.e]+)", wall["camera"]).group(1))
     assert height == pytest.approx(40.0 * wall["thickness"], rel=0.01)
+    assert "thinnest wall" in wall["status"]
+
+
+def test_the_thinnest_wall_is_marked_once(smoke):
+    wall = smoke["thinnest_wall"]
+    assert wall["marks_in_view"] == 1
+    assert wall["mark_at"] == pytest.approx(wall["at"])
+    assert wall["marks_after_second_click"] == 1

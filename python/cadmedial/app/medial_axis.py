@@ -7,7 +7,8 @@ object type ``Mesh::FeaturePython``, property names below.
 What the document keeps (so reopening needs no recompute):
   Mesh          the polygons fanned into triangles (all of them: non-manifold junctions too);
                 points in the engine's vertex order
-  RadiusColors  one colour per point (the view provider's per-vertex colouring)
+  RadiusColors  one colour per point (the view provider's per-vertex colouring), for the
+                colour range of color_range.py
   ResultFile    the engine's own mesh as binary PLY (polygons, radius, kind, solid, 1-D edges)
                 for export and for the Part shape
 The 1-D edges of the axis (where it is a curve no face carries) cannot be shown by a Mesh
@@ -23,9 +24,10 @@ import cadmedial
 from cadmedial.api import refines_by_default
 
 from . import registry
+from .color_range import add_color_range, range_changed, set_range
 from .registry import attach_view_provider
 from .medial_shape import make_medial_shape
-from .results import medial_result, prepare_result, store_result  # noqa: F401 (medial_result: API)
+from .results import medial_result, prepare_result, recolour, store_result  # noqa: F401 (medial_result: API)
 
 INPUTS = "Medial Axis"
 OUTPUTS = "Result"
@@ -88,6 +90,7 @@ class MedialAxis:
         add("App::PropertyFileIncluded", "ResultFile", OUTPUTS, "The medial mesh as binary PLY")
         obj.setEditorMode("RadiusColors", HIDDEN)
         obj.setEditorMode("ResultFile", HIDDEN)
+        add_color_range(obj)
 
     def _init_transient(self):
         self.result = None   # the last MedialAxisResult, in memory only
@@ -111,6 +114,11 @@ class MedialAxis:
             obj.Refine = False
         if "MinFeature" not in obj.PropertiesList:
             obj.addProperty("App::PropertyLength", "MinFeature", INPUTS, MIN_FEATURE_DOC)
+        add_color_range(obj)  # automatic for a document saved before it: what it showed
+
+    def onChanged(self, obj, prop):
+        if range_changed(obj, prop):
+            recolour(obj)
 
     def execute(self, obj):
         started = time.perf_counter()
@@ -171,11 +179,13 @@ def compute_for(obj):
     if obj.Source is None:
         raise cadmedial.InvalidInput("no Source: link a solid")
     return compute_shape(Part.getShape(obj.Source), obj.Spacing.Value, obj.Samples, obj.Theta,
-                         obj.Rho, obj.Label, bool(obj.Refine), min_feature_of(obj))
+                         obj.Rho, obj.Label, bool(obj.Refine), min_feature_of(obj), set_range(obj))
 
 
-def compute_shape(shape, spacing, samples, theta, rho, label, refine=None, min_feature=0.0):
-    """cadmedial.compute on a Part.Shape, with FreeCAD's progress bar (Esc cancels) in the GUI."""
+def compute_shape(shape, spacing, samples, theta, rho, label, refine=None, min_feature=0.0,
+                  color_range=None):
+    """cadmedial.compute on a Part.Shape, with FreeCAD's progress bar (Esc cancels) in the GUI.
+    color_range: (low, high) the GUI's worker colours the mesh for, None: its radii."""
     if shape.isNull():
         raise cadmedial.InvalidInput("the source has no shape (recompute it first?)")
     spacing = spacing if spacing > 0 else None
@@ -187,7 +197,7 @@ def compute_shape(shape, spacing, samples, theta, rho, label, refine=None, min_f
         # with a progress dialog and Stop. Returns a StoredResult.
         core = cadmedial.read_shape(shape)  # the Part.Shape is read here, in this thread
         return registry.run_long("Medial axis of %s" % label, lambda progress: prepare_result(
-            cadmedial.compute(core, progress=progress, **params)))
+            cadmedial.compute(core, progress=progress, **params), color_range))
     if not App.GuiUp:
         return cadmedial.compute(shape, **params)
     with StatusBarProgress("Medial axis of %s" % label) as progress:

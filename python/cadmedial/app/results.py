@@ -16,8 +16,7 @@ import FreeCAD as App
 import Mesh
 
 import cadmedial
-from cadmedial.colormap import colors_of
-
+from . import color_range as colors
 from .registry import let_gui_breathe
 
 
@@ -25,7 +24,7 @@ class StoredResult:
     """What store_result() assigns, built from one MedialAxisResult. Owns a temporary folder
     holding the PLY file until store_result() (or discard()) removes it."""
 
-    def __init__(self, result):
+    def __init__(self, result, color_range=None):
         self.result = result
         self.mesh = Mesh.Mesh()
         # False: no manifold check. The medial surface is non-manifold where sheets meet, and the
@@ -36,7 +35,9 @@ class StoredResult:
             self.low, self.high = float(result.radius.min()), float(result.radius.max())
         else:
             self.low = self.high = 0.0
-        self.colors = [tuple(c) for c in colors_of(result.radius, self.low, self.high).tolist()]
+        # color_range: the object's own (see color_range.set_range), or None: the radii's.
+        self.color_range = color_range or (self.low, self.high)
+        self.colors = colors.radius_colors(result.radius, *self.color_range)
         self.folder = tempfile.mkdtemp(prefix="cadmedial-")
         self.ply = os.path.join(self.folder, "medial_axis.ply")
         result.save(self.ply)
@@ -45,16 +46,17 @@ class StoredResult:
         shutil.rmtree(self.folder, ignore_errors=True)
 
 
-def prepare_result(result):
-    """The StoredResult of a MedialAxisResult (slow: run it off the GUI thread)."""
-    return StoredResult(result)
+def prepare_result(result, color_range=None):
+    """The StoredResult of a MedialAxisResult (slow: run it off the GUI thread), coloured for
+    color_range (low, high), or for its radii when None."""
+    return StoredResult(result, color_range)
 
 
 def store_result(obj, stored):
     """Puts a StoredResult (or a MedialAxisResult, prepared here) into obj's Mesh, colours,
     counts and ResultFile."""
     if not isinstance(stored, StoredResult):
-        stored = prepare_result(stored)
+        stored = prepare_result(stored, colors.set_range(obj))
     result = stored.result
     try:
         # Each of the mesh and the colours takes the GUI about 3 s per million vertices to
@@ -62,6 +64,10 @@ def store_result(obj, stored):
         obj.Mesh = stored.mesh
         let_gui_breathe()
         obj.RadiusMin, obj.RadiusMax = stored.low, stored.high
+        colors.follow_radii(obj)
+        wanted = colors.color_range(obj)
+        if wanted != stored.color_range:  # the range was set since the compute started
+            stored.colors = colors.radius_colors(result.radius, *wanted)
         obj.RadiusColors = stored.colors
         let_gui_breathe()
         stats = result.stats
@@ -106,3 +112,14 @@ def medial_result(obj):
             raise cadmedial.InvalidInput("%s has no result yet: recompute it" % obj.Label)
         proxy.result = cadmedial.load(obj.ResultFile)
     return proxy.result
+
+
+def recolour(obj):
+    """RadiusColors for obj's colour range, from the radii of its result (read from ResultFile
+    after a reopen; no engine run). Does nothing while obj has no result of its mesh's size."""
+    try:
+        radius = medial_result(obj).radius
+    except cadmedial.InvalidInput:  # no result file (yet): the colours stay
+        return
+    if len(radius) == obj.VertexCount:
+        obj.RadiusColors = colors.radius_colors(radius, *colors.color_range(obj))

@@ -13,6 +13,7 @@ import cadmedial
 from cadmedial.app import export_medial_axis, is_medial_axis, make_medial_shape
 
 from .icons import icon_path
+from .wall_marker import marker
 
 
 # The last message box shown (tests read and close it; it does not block).
@@ -152,28 +153,49 @@ class MakeMedialShape:
 
 
 class GoToThinnestWall:
-    """Zooms the 3D view onto the thinnest wall of the selected medial axis (ThinnestWallAt)."""
+    """Zooms the 3D view onto the thinnest wall (ThinnestWallAt) of the selected medial axis, or,
+    with none selected, of the thinnest among the visible ones: one click. Marks the place."""
 
     def GetResources(self):
-        return {"Pixmap": icon_path("MedialAxis_Create.svg"),
+        return {"Pixmap": icon_path("MedialAxis_ThinnestWall.svg"),
                 "MenuText": "Go to the thinnest wall",
-                "ToolTip": "Zoom the view onto the thinnest wall the selected medial axis found"}
+                "ToolTip": "Zoom the view onto the thinnest wall the selected medial axis found "
+                           "(none selected: the thinnest of the visible ones) and mark it"}
 
     def IsActive(self):
-        return len(selected_medial_axes()) == 1 and Gui.ActiveDocument is not None
+        if Gui.ActiveDocument is None:
+            return False
+        selected = selected_medial_axes()
+        return len(selected) == 1 if selected else bool(walls_shown(App.ActiveDocument))
 
     def Activated(self):
-        obj = selected_medial_axes()[0]
+        selected = selected_medial_axes()
+        if selected:
+            obj = selected[0]
+        else:
+            shown = walls_shown(App.ActiveDocument)
+            if not shown:
+                return
+            obj = min(shown, key=lambda o: o.ThinnestWall.Value)
         thickness = obj.ThinnestWall.Value if "ThinnestWall" in obj.PropertiesList else 0.0
         if thickness <= 0:
             show_message("Thinnest wall", "%s found no wall thinner than two sample spacings."
                          % obj.Label, QtWidgets.QMessageBox.Information)
             return
         at = obj.ThinnestWallAt
-        zoom_onto(Gui.ActiveDocument.ActiveView, at, 40.0 * thickness)
+        view = Gui.ActiveDocument.ActiveView
+        zoom_onto(view, at, 40.0 * thickness)
+        marker.show(view, (at.x, at.y, at.z), thickness, owner=obj)
         Gui.getMainWindow().statusBar().showMessage(
             "%s: thinnest wall %.4g mm at (%.4g, %.4g, %.4g)" % (obj.Label, thickness, at.x, at.y, at.z),
             15000)
+
+
+def walls_shown(doc):
+    """The visible MedialAxis objects of doc that found a thin wall."""
+    return [obj for obj in (doc.Objects if doc is not None else [])
+            if is_medial_axis(obj) and obj.ViewObject is not None and obj.ViewObject.Visibility
+            and "ThinnestWall" in obj.PropertiesList and obj.ThinnestWall.Value > 0]
 
 
 def zoom_onto(view, point, size):

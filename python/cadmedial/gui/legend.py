@@ -1,10 +1,12 @@
 """The radius legend: a small panel over each 3D view of a document that shows the colour map
-and the radius range of every visible MedialAxis object in it."""
+and the colour range of every visible MedialAxis object in it (its radii's, or the one set in
+its ColorRangeMin / ColorRangeMax)."""
 
 import FreeCADGui as Gui
 from PySide2 import QtCore, QtGui, QtWidgets
 
 from cadmedial.app import is_medial_axis
+from cadmedial.app.color_range import color_range, set_range
 from cadmedial.colormap import STOPS
 
 OBJECT_NAME = "cadmedial_radius_legend"
@@ -57,8 +59,10 @@ class RadiusLegend(QtWidgets.QFrame):
         return pixmap
 
     def set_entries(self, entries, notes=""):
-        """entries: list of (label, low, high); the bar spans each object's own range. notes:
-        rich text shown under the lines (the thickness legend's colour key)."""
+        """entries: list of (label, low, high) or (label, low, high, more): the bar spans each
+        object's own colour range low..high, the ticks show it (one object); `more` is text
+        after the object's line. notes: rich text shown under the lines (the thickness legend's
+        colour key)."""
         if not entries:
             self.hide()
             return
@@ -75,8 +79,8 @@ class RadiusLegend(QtWidgets.QFrame):
             tick.move(0, max(0, min(self.BAR_HEIGHT - tick.height(), y)))
             width = max(width, tick.width())
         self.scale.setFixedWidth(width)
-        self.lines.setText("<br>".join(["%s: %.4g – %.4g mm" % entry for entry in entries]
-                                       + ([notes] if notes else [])))
+        self.lines.setText("<br>".join(["%s: %.4g – %.4g mm%s" % (tuple(entry[:3]) + (
+            entry[3] if len(entry) > 3 else "",)) for entry in entries] + ([notes] if notes else [])))
         self.adjustSize()
         self._place()
         self.show()
@@ -152,8 +156,18 @@ def refresh(doc, leaving=None):
             continue
         if obj.ViewObject is None or not obj.ViewObject.Visibility:
             continue
-        entries.append((obj.Label, obj.RadiusMin.Value, obj.RadiusMax.Value))
+        entries.append(entry_of(obj))
     return show_on_views(doc, entries, RadiusLegend)
+
+
+def entry_of(obj):
+    """A MedialAxis object's legend entry: its colour range, and its radii when that was set
+    by hand (the colours then clamp outside it)."""
+    low, high = color_range(obj)
+    if set_range(obj) is None:
+        return (obj.Label, low, high)
+    return (obj.Label, low, high, "<br>&nbsp;&nbsp;radii %.4g – %.4g mm" % (
+        obj.RadiusMin.Value, obj.RadiusMax.Value))
 
 
 def show_on_views(doc, entries, make, name=OBJECT_NAME, notes=""):

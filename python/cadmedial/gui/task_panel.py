@@ -8,7 +8,9 @@ from PySide2 import QtCore, QtGui, QtWidgets
 
 import cadmedial
 from cadmedial.app import make_medial_axis
+from cadmedial.app.medial_axis import min_feature_of
 
+from .color_range_rows import ColorRangeRows
 from .icons import icon_path
 from .worker import ComputeJob, Job
 
@@ -100,13 +102,21 @@ class TaskPanelMedialAxis:
         self.spacing.setDecimals(4)
         self.spacing.setSuffix(" mm")
         self.spacing.setToolTip("Distance between boundary samples")
-        for box in (self.mode, self.samples, self.spacing):
+        self.min_feature = QtWidgets.QDoubleSpinBox()
+        self.min_feature.setRange(0.0, 1e6)
+        self.min_feature.setDecimals(4)
+        self.min_feature.setSuffix(" mm")
+        self.min_feature.setSpecialValueText("none")  # 0: no minimum
+        self.min_feature.setToolTip("Walls thinner than this are not sampled finer than it needs "
+                                    "(a warning names the thinnest and where); none: no minimum")
+        for box in (self.mode, self.samples, self.spacing, self.min_feature):
             box.setMinimumWidth(60)
             box.setSizePolicy(QtWidgets.QSizePolicy.Expanding, QtWidgets.QSizePolicy.Fixed)
         self.preview = _wrapping("")
         rows.addRow("Density", self.mode)
         rows.addRow("Samples", self.samples)
         rows.addRow("Spacing", self.spacing)
+        rows.addRow("Min feature", self.min_feature)
         rows.addRow(self.preview)
         self.refine = QtWidgets.QCheckBox("Refine where needed")
         self.refine.setToolTip("Sample finer where the axis's topology is wrong: where a solid's medial axis has holes or extra loops (its Euler "
@@ -132,6 +142,10 @@ class TaskPanelMedialAxis:
         rows.addRow("Rho", self.rho)
         layout.addWidget(selection)
 
+        if self.edit is not None:  # a result to recolour: its colour range
+            self.colors = ColorRangeRows(self.edit, _form_layout)
+            layout.addWidget(self.colors.group)
+
         self.make_shape = QtWidgets.QCheckBox("Also make a Part shape")
         self.make_shape.setToolTip("A Part object of planar faces, one per medial polygon")
         layout.addWidget(self.make_shape)
@@ -139,7 +153,7 @@ class TaskPanelMedialAxis:
 
         layout.addStretch(1)
 
-        for widget in (self.samples, self.spacing):
+        for widget in (self.samples, self.spacing, self.min_feature):
             widget.valueChanged.connect(self.update_preview)
         self.mode.currentIndexChanged.connect(self._mode_changed)
         return form
@@ -151,6 +165,7 @@ class TaskPanelMedialAxis:
         self.theta.setValue(source.Theta if source is not None else 5.0)
         self.rho.setValue(source.Rho if source is not None else 8.0)
         self.refine.setChecked(bool(source.Refine) if source is not None else True)
+        self.min_feature.setValue(min_feature_of(source) if source is not None else 0.0)
         self.samples.setValue(samples or 20000)
         if spacing > 0:
             self.spacing.setValue(spacing)
@@ -181,7 +196,8 @@ class TaskPanelMedialAxis:
         return {"spacing": self.spacing.value() if key == "spacing" else None,
                 "samples": self.samples.value() if key == "samples" else None,
                 "theta": self.theta.value(), "rho": self.rho.value(),
-                "refine": self.refine.isChecked()}
+                "refine": self.refine.isChecked(),
+                "min_feature": self.min_feature.value() or None}
 
     def update_preview(self, *_):
         """Asks for a new estimate, EstimateDelay ms after the last change: typing 3000000 key
@@ -197,7 +213,8 @@ class TaskPanelMedialAxis:
         shapes = list(self.shapes)
         self.estimate_stale = False
         self.estimate = Job(lambda progress: [
-            cadmedial.plan_sampling(s, spacing=p["spacing"], samples=p["samples"]) for s in shapes])
+            cadmedial.plan_sampling(s, spacing=p["spacing"], samples=p["samples"],
+                                    min_feature=p["min_feature"]) for s in shapes])
         self.estimate.mode = self.mode_key()
         self.estimate.start()
         self.estimate_poll.start()
@@ -267,7 +284,8 @@ class TaskPanelMedialAxis:
 
     # -- running ----------------------------------------------------------------------------
     def _set_running(self, running):
-        for widget in (self.mode, self.theta, self.rho, self.refine, self.make_shape):
+        for widget in (self.mode, self.min_feature, self.theta, self.rho, self.refine,
+                       self.make_shape):
             widget.setEnabled(not running)
         self.samples.setEnabled(False)
         self.spacing.setEnabled(False)
@@ -326,6 +344,7 @@ class TaskPanelMedialAxis:
         obj.Theta = p["theta"]
         obj.Rho = p["rho"]
         obj.Refine = p["refine"]
+        obj.MinFeature = p["min_feature"] or 0.0
         obj.Document.recompute()
         if obj.Status != "ok":
             self._show_error(obj.Status)

@@ -9,6 +9,7 @@ from PySide2 import QtCore
 
 from . import legend
 from .icons import icon_path
+from .wall_marker import marker
 
 
 class _StatelessProxy:
@@ -63,9 +64,12 @@ class ViewProviderMedialAxis(_StatelessProxy):
     def updateData(self, obj, prop):
         if prop == "RadiusColors" and obj.ViewObject is not None:
             # Switch colouring off and on so that the new colour list is applied to the new mesh.
+            # New colours for the same mesh (a new colour range) need it too: without it the
+            # view kept the old colours (tests/freecad/test_color_range_gui.py).
             obj.ViewObject.Coloring = False
             obj.ViewObject.Coloring = True
-        if prop in ("RadiusColors", "VertexCount", "RadiusMax", "Label"):
+        if prop in ("RadiusColors", "VertexCount", "RadiusMin", "RadiusMax", "Label",
+                    "AutoColorRange", "ColorRangeMin", "ColorRangeMax"):
             _refresh_later(obj.Document)
 
     def onChanged(self, vobj, prop):
@@ -74,6 +78,8 @@ class ViewProviderMedialAxis(_StatelessProxy):
 
     def onDelete(self, vobj, subelements):
         legend.refresh(vobj.Object.Document, leaving=vobj.Object)
+        if marker.owner is vobj.Object:  # its thinnest wall's mark goes with it
+            marker.clear()
         return True
 
     def setEdit(self, vobj, mode=0):
