@@ -174,7 +174,9 @@ def check_probe(doc, obj, task):
                        "sphere": hit and hit["sphere"], "ray": hit and hit["ray"],
                        "at": hit and hit["point"], "ball_radius": hit and hit["ball_radius"],
                        "probe_ms": hit and round(hit["ms"], 1),
-                       "pick_ms": round(task.probe.pick_ms or 0, 1), "stall_ms": beat.gap()})
+                       "probe_cpu_ms": hit and round(hit["cpu_ms"], 1),
+                       "pick_ms": round(task.probe.pick_ms or 0, 1),
+                       "pick_cpu_ms": round(task.probe.pick_cpu_ms or 0, 1), "stall_ms": beat.gap()})
     report["probes"] = probes
     report["selection_after_clicks"] = [s.ObjectName for s in Gui.Selection.getSelectionEx()]
     Gui.Selection.clearSelection()

@@ -477,15 +477,19 @@ void warn_of_short_edges(const EdgeReach& reach, int solid, int solids, std::vec
   msg.precision(3);
   if (solids > 1) msg << "solid " << solid + 1 << ": ";
   const std::size_t named = std::min<std::size_t>(3, reach.short_edges.size());
-  msg << (reach.short_edges.size() == 1 ? "a convex edge is" : std::to_string(reach.short_edges.size()) + " convex edges are")
-      << " reached by the axis along less than " << 100.0 * EdgeReach::kReachedShare << " % of their length: ";
+  const bool one = reach.short_edges.size() == 1;
+  msg << (one ? "a convex edge is" : std::to_string(reach.short_edges.size()) + " convex edges are")
+      << " reached by the axis along less than " << 100.0 * EdgeReach::kReachedShare << " % of "
+      << (one ? "its" : "their") << " length: ";
   for (std::size_t k = 0; k < named; ++k) {
     const ShortEdge& e = reach.short_edges[k];
     msg << (k ? "; " : "") << "edge " << e.edge + 1 << " along " << std::lround(100.0 * e.reached) << " % (not near ("
         << e.at[0] << ", " << e.at[1] << ", " << e.at[2] << "))";
   }
   if (reach.short_edges.size() > named) msg << "; and " << reach.short_edges.size() - named << " more";
-  msg << "; the walls beside them are about a spacing thick: a smaller spacing usually reaches them";
+  msg << "; the part beside " << (one ? "it" : "them")
+      << " is finer than the sampling there (thin walls, a sharp wedge): a smaller spacing usually reaches "
+      << (one ? "it" : "them");
   warnings.push_back(msg.str());
 }
 
