@@ -1,0 +1,56 @@
+"""Borders of sheets (rims and free borders) grouped into the curves they trace.
+
+A sheet's border is clean along a sharp edge of the solid (one chain of rim edges per edge), but
+frays where the exact axis ends at a fillet's centre curve: filletBox's largest sheet ends there
+in 893 separate pieces of free border, a median 0.08 mm long (spacing 0.21 mm), the teeth of a
+comb of slivers. Border edges of one sheet closer than ``join`` (a spacing) are one border.
+"""
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
+
+from .chains import chain, polyline_length
+
+
+def group_borders(pairs, edge_sheet, vertices, radius, join):
+    """Dicts of the borders made of the (K, 2) edges ``pairs``, each of sheet edge_sheet[k]:
+    sheet, length (sum of its edges), edges (n, 2) int64, vertices (P,) int64 the longest chain of
+    its edges in order, closed (that chain is a loop), span (distance between its two farthest
+    points, about), radius_min, radius_max. Largest length first."""
+    pairs = np.asarray(pairs, dtype=np.int64).reshape(-1, 2)
+    k = len(pairs)
+    if k == 0:
+        return []
+    ends = vertices[pairs.ravel()]
+    near = cKDTree(ends).query_pairs(join, output_type="ndarray")
+    a, b = near[:, 0] // 2, near[:, 1] // 2
+    same = edge_sheet[a] == edge_sheet[b]
+    # Edges sharing a vertex are 0 apart: query_pairs has them too.
+    graph = coo_matrix((np.ones(int(same.sum())), (a[same], b[same])), shape=(k, k))
+    _, label = connected_components(graph, directed=False)
+    order = np.argsort(label, kind="stable")
+    bounds = np.searchsorted(label[order], np.arange(label.max() + 2))
+    seg = np.linalg.norm(vertices[pairs[:, 0]] - vertices[pairs[:, 1]], axis=1)
+    out = []
+    for g in range(len(bounds) - 1):
+        rows = order[bounds[g]:bounds[g + 1]]
+        e = pairs[rows]
+        chains = chain(e, len(vertices))
+        path, _, closed = max(chains, key=lambda c: polyline_length(vertices, c[0]))
+        p = vertices[np.unique(e)]
+        far = p[np.argmax(np.linalg.norm(p - p.mean(axis=0), axis=1))]
+        r = radius[e.ravel()]
+        out.append({
+            "sheet": int(edge_sheet[rows[0]]),
+            "length": float(seg[rows].sum()),
+            "edges": e,
+            "vertices": path,
+            "closed": bool(closed),
+            "span": float(np.linalg.norm(p - far, axis=1).max()),
+            "radius_min": float(r.min()),
+            "radius_max": float(r.max()),
+        })
+    out.sort(key=lambda d: -d["length"])
+    return out

@@ -1,0 +1,130 @@
+"""Sub-resolution sheets ("slivers"): merged into the sheet they fray from, or gathered into tubes.
+
+The raw Voronoi axis frays where the exact axis has a feature thinner than the sampling: the
+ragged end of a sheet at a fillet's centre curve, the crossing of a seam, and above all a curve of
+the axis (a cylinder's axis) which comes out as a bundle of thousands of sliver faces around the
+line, each a sheet of its own since 3 to 6 of them share every edge. A sheet of less area than a
+couple of spacings squared cannot be told from that noise: measured on the default density, the
+real sheets of a cylinder (its cones) have 2,175 h^2, its axis's slivers at most 1.1 h^2;
+filletBox's sheets at least 828 h^2, its slivers at most 0.2 h^2 (h: the sample spacing).
+
+A sliver within ``reach`` (one spacing, along a path through touching slivers) of a real sheet is
+part of that sheet's ragged border: it joins the nearest. Of the slivers left, a connected
+cluster spanning ``tube_length`` (3 spacings) or more is a tube (a curve of the axis drawn as
+faces); a shorter one is too small to hold structure of its own and joins the real sheet nearest
+along its slivers, or becomes one sheet if it touches none.
+"""
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components, dijkstra
+
+from .grouped import grouped_extremes
+from .sheets import face_vertex_rows
+
+
+def _sheet_pairs(table, labels):
+    """(a, b, edge) rows for each edge of 3+ faces and each pair of its faces' sheets a != b."""
+    rows = []
+    for c in np.unique(table.count[table.count >= 3]).tolist():
+        edges = np.flatnonzero(table.count == c)
+        f = table.faces[table.face_start[edges][:, None] + np.arange(c)]
+        s = labels[f]
+        for i in range(c):
+            for j in range(i + 1, c):
+                diff = s[:, i] != s[:, j]
+                rows.append(np.stack([s[diff, i], s[diff, j], edges[diff]], axis=1))
+    if not rows:
+        return np.zeros((0, 3), dtype=np.int64)
+    return np.concatenate(rows).astype(np.int64)
+
+
+def sheet_boxes(labels, count, vertices, faces):
+    """(centroid (S, 3) mean of corners, diagonal (S,) of the bounding box) of each sheet."""
+    rows = face_vertex_rows(faces)
+    corners = vertices[np.asarray(faces.indices)]
+    s = labels[rows]
+    lo, hi = grouped_extremes(s, corners, count)
+    n = np.bincount(s, minlength=count)[:, None]
+    centre = np.stack([np.bincount(s, weights=corners[:, k], minlength=count) for k in range(3)],
+                      axis=1) / np.maximum(n, 1)
+    return centre, np.linalg.norm(hi - lo, axis=1)
+
+
+def resolve_slivers(table, labels, count, area, vertices, faces, spacing,
+                    sliver_area=2.0, reach=1.0, tube_length=3.0):
+    """Merges slivers of the raw sheets ``labels`` (F,) (``count`` of them).
+
+    area (F,) face areas; spacing h; sliver_area in h^2, reach and tube_length in h.
+    Returns (sheet (F,) int64 new sheet label or -1 for a tube face, tube (F,) int64 tube label or
+    -1, core (F,) bool: the face was in a real (not sliver) raw sheet)."""
+    sheet_area = np.bincount(labels, weights=area, minlength=count)
+    small = sheet_area < sliver_area * spacing ** 2
+    core = ~small[labels]
+    if not small.any():
+        return labels.copy(), np.full(len(labels), -1, dtype=np.int64), core
+    centre, _ = sheet_boxes(labels, count, vertices, faces)
+    pairs = _sheet_pairs(table, labels)
+    a, b, e = pairs[:, 0], pairs[:, 1], pairs[:, 2]
+    # Only links that touch a sliver matter; a real sheet's position is where it meets the sliver
+    # (the shared edge's midpoint), a sliver's its centroid.
+    touch = small[a] | small[b]
+    a, b, e = a[touch], b[touch], e[touch]
+    mid = 0.5 * (vertices[table.pairs[e, 0]] + vertices[table.pairs[e, 1]])
+    pa = np.where(small[a][:, None], centre[a], mid)
+    pb = np.where(small[b][:, None], centre[b], mid)
+    w = np.linalg.norm(pa - pb, axis=1) + 1e-12 * spacing  # 0 would drop the link
+    # Keep the shortest of parallel links (coo_matrix would add them up).
+    order = np.lexsort((w, np.maximum(a, b), np.minimum(a, b)))
+    lo, hi, w = np.minimum(a, b)[order], np.maximum(a, b)[order], w[order]
+    first = np.r_[True, (lo[1:] != lo[:-1]) | (hi[1:] != hi[:-1])]
+    lo, hi, w = lo[first], hi[first], w[first]
+    graph = coo_matrix((w, (lo, hi)), shape=(count, count)).tocsr()
+    sources = np.flatnonzero(~small)
+    new = np.arange(count, dtype=np.int64)
+    left = small.copy()
+    if len(sources):
+        # Paths may run only through slivers: cut links between two real sheets.
+        both_real = ~small[lo] & ~small[hi]
+        through = coo_matrix((w[~both_real], (lo[~both_real], hi[~both_real])),
+                             shape=(count, count)).tocsr()
+        dist, _, source = dijkstra(through, directed=False, indices=sources, min_only=True,
+                                   return_predecessors=True)
+        joined = small & (dist <= reach * spacing) & (source >= 0)
+        new[joined] = source[joined]
+        left &= ~joined
+    del graph
+    # Clusters of the slivers left, joined through the links between two of them.
+    keep = left[lo] & left[hi]
+    n_left = int(left.sum())
+    tube = np.full(count, -1, dtype=np.int64)
+    if n_left:
+        cluster_graph = coo_matrix((np.ones(int(keep.sum())), (lo[keep], hi[keep])),
+                                   shape=(count, count))
+        _, cluster = connected_components(cluster_graph, directed=False)
+        ids = np.flatnonzero(left)
+        rows = face_vertex_rows(faces)
+        corners = vertices[np.asarray(faces.indices)]
+        face_left = left[labels]
+        c_of_corner = cluster[labels[rows]][face_left[rows]]
+        pts = corners[face_left[rows]]
+        uniq, inv = np.unique(c_of_corner, return_inverse=True)
+        bl, bh = grouped_extremes(inv, pts, len(uniq))
+        length = np.linalg.norm(bh - bl, axis=1)
+        is_tube = length >= tube_length * spacing
+        tube_no = np.full(len(uniq), -1, dtype=np.int64)
+        tube_no[is_tube] = np.arange(int(is_tube.sum()))
+        where = np.searchsorted(uniq, cluster[ids])
+        tube[ids] = tube_no[where]
+        # A short cluster joins the real sheet nearest along its slivers (it is too small to
+        # show any structure of its own), or, touching none, becomes one sheet: that of its
+        # first raw sheet.
+        rep = np.full(len(uniq), -1, dtype=np.int64)
+        for i, c in zip(ids.tolist(), where.tolist()):
+            if rep[c] < 0:
+                rep[c] = i
+        reached = source[ids] >= 0 if len(sources) else np.zeros(len(ids), dtype=bool)
+        nearest = source[ids] if len(sources) else rep[where]
+        new[ids] = np.where(tube[ids] >= 0, -1, np.where(reached, nearest, rep[where]))
+    sheet = new[labels]
+    return sheet, tube[labels], core
