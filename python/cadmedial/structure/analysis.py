@@ -3,7 +3,7 @@
 import numpy as np
 
 from .borders import group_borders
-from .curves import edge_curves, tube_curves
+from .curves import edge_curves, link_curves, tube_curves
 from .edge_kinds import FREE, NAMES, RIM, SEAM, classify_edges
 from .edge_table import edge_table
 from .junctions import seams_and_junctions
@@ -134,9 +134,17 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
         return ids[order].tolist(), times[order].tolist()
 
     curves_edges = edge_curves(result)
-    curves_tubes = tube_curves(table, tube, vertices, radius)
-    curves = curves_edges + curves_tubes
-    face_curve = np.where(tube >= 0, tube + len(curves_edges), -1)
+    curves_tubes = tube_curves(table, tube, vertices, radius, h)
+    for k, c in enumerate(curves_tubes):
+        c["tube"] = k
+    curves = link_curves(curves_edges + curves_tubes, vertices, radius, tube_length * h)
+    # A tube face's curve: the one its tube went into.
+    tube_to_curve = np.full(len(curves_tubes) + 1, -1, dtype=np.int64)
+    for k, c in enumerate(curves):
+        for t in c.pop("tubes", [c["tube"]] if "tube" in c else []):
+            tube_to_curve[t] = k
+        c.pop("tube", None)
+    face_curve = np.where(tube >= 0, tube_to_curve[tube], -1)
 
     seam_rows = np.flatnonzero(kinds == SEAM)
     raw_seams, junctions, junction_of = seams_and_junctions(

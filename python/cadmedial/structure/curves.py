@@ -51,7 +51,59 @@ def _diameter_path(pairs, vertices, seed):
     return nodes[np.array(path[::-1], dtype=np.int64)]
 
 
-def tube_curves(table, tube, vertices, radius):
+def _trim_ends(path, radius, slack):
+    """path without the end vertices whose ball is more than ``slack`` smaller than those just
+    inside: a point of a curve of the axis has the largest ball around, one a distance d off the
+    line a ball about d smaller, and the longest path through a tube starts and ends on the
+    outermost sliver vertices (the torus's tube: its first vertex 0.72 off the core circle,
+    3.6 spacings, the next 0.024)."""
+    r = radius[path]
+    lo, hi = 0, len(path)
+    while hi - lo > 2 and r[lo] < np.median(r[lo + 1:lo + 11]) - slack:
+        lo += 1
+    while hi - lo > 2 and r[hi - 1] < np.median(r[max(lo, hi - 11):hi - 1]) - slack:
+        hi -= 1
+    return path[lo:hi]
+
+
+def _tubes_of(c):
+    return c.get("tubes", [c["tube"]] if "tube" in c else [])
+
+
+def link_curves(curves, vertices, radius, gap):
+    """curves with those whose ends are less than ``gap`` apart joined end to end (a curve that
+    comes out partly as 1-D edges and partly as a tube: the torus's core circle), and a curve
+    whose two ends are that close closed. Joined curves get source "edges+tube" and "tubes": the
+    ids of the tubes (key "tube" of a tube's curve) they hold."""
+    curves = list(curves)
+    while True:
+        best = None
+        ends = [(i, side) for i, c in enumerate(curves) if not c["closed"] for side in (0, -1)]
+        for x in range(len(ends)):
+            for y in range(x + 1, len(ends)):
+                (i, si), (j, sj) = ends[x], ends[y]
+                d = np.linalg.norm(vertices[curves[i]["vertices"][si]] -
+                                   vertices[curves[j]["vertices"][sj]])
+                if d < gap and (best is None or d < best[0]):
+                    best = (d, i, si, j, sj)
+        if best is None:
+            return curves
+        _, i, si, j, sj = best
+        a, b = curves[i], curves[j]
+        if i == j:
+            path = np.r_[a["vertices"], a["vertices"][:1]]
+            merged = _curve(vertices, radius, path, a["source"], closed=True)
+        else:
+            pa = a["vertices"] if si == -1 else a["vertices"][::-1]
+            pb = b["vertices"] if sj == 0 else b["vertices"][::-1]
+            source = a["source"] if a["source"] == b["source"] else "edges+tube"
+            merged = _curve(vertices, radius, np.r_[pa, pb], source)
+        merged["faces"] = a.get("faces", 0) + (b.get("faces", 0) if i != j else 0)
+        merged["tubes"] = _tubes_of(a) + (_tubes_of(b) if i != j else [])
+        curves = [c for k, c in enumerate(curves) if k not in (i, j)] + [merged]
+
+
+def tube_curves(table, tube, vertices, radius, spacing):
     """Dicts (as edge_curves, source "tube", plus faces: the tube's face count) of each tube:
     the longest shortest path along its faces' edges, its line. (F,) ``tube`` labels faces."""
     out = []
@@ -67,7 +119,8 @@ def tube_curves(table, tube, vertices, radius):
     faces_per_tube = np.bincount(tube[tube >= 0])
     for k in range(len(bounds) - 1):
         pairs = table.pairs[e[bounds[k]:bounds[k + 1]]]
-        path = _diameter_path(pairs, vertices, int(pairs[0, 0]))
+        path = _trim_ends(_diameter_path(pairs, vertices, int(pairs[0, 0])), radius,
+                          0.5 * spacing)
         c = _curve(vertices, radius, path, "tube")
         c["faces"] = int(faces_per_tube[k])
         out.append(c)
