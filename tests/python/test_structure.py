@@ -142,8 +142,9 @@ def match_planar_sheets(result, s, exact, tol):
 
 
 def check_seams(result, found, exact_seams, tol):
-    """Each found seam lies within tol of one exact seam segment and has its length within tol;
-    each exact segment is matched once."""
+    """Each found seam lies within tol of one exact seam segment and has its length within tol
+    plus 2 % (the polyline zig-zags about the line, within a quarter spacing, which lengthens
+    it: the plate's long seams by 1.2 %); each exact segment is matched once."""
     matched = []
     for seam in found:
         p = result.vertices[seam["vertices"]]
@@ -151,7 +152,8 @@ def check_seams(result, found, exact_seams, tol):
         k = int(np.argmin(far))
         assert far[k] < tol, (k, far[k])
         exact_length = np.linalg.norm(exact_seams[k][1] - exact_seams[k][0])
-        assert abs(seam["length"] - exact_length) < tol, (seam["length"], exact_length)
+        assert abs(seam["length"] - exact_length) < tol + 0.02 * exact_length, \
+            (seam["length"], exact_length)
         matched.append(k)
     assert sorted(matched) == list(range(len(exact_seams)))
 
