@@ -23,13 +23,18 @@ def group_borders(pairs, edge_sheet, vertices, radius, join):
     k = len(pairs)
     if k == 0:
         return []
-    ends = vertices[pairs.ravel()]
-    near = cKDTree(ends).query_pairs(join, output_type="ndarray")
-    a, b = near[:, 0] // 2, near[:, 1] // 2
-    same = edge_sheet[a] == edge_sheet[b]
-    # Edges sharing a vertex are 0 apart: query_pairs has them too.
-    graph = coo_matrix((np.ones(int(same.sum())), (a[same], b[same])), shape=(k, k))
-    _, label = connected_components(graph, directed=False)
+    # Nodes: the (sheet, vertex) pairs of the border, linked by its edges and when closer than
+    # join (and of one sheet); an edge's group is its first end's component.
+    key = np.stack([np.repeat(edge_sheet, 2), pairs.ravel()], axis=1)
+    nodes, node_of = np.unique(key, axis=0, return_inverse=True)
+    node_of = node_of.reshape(-1, 2)
+    near = cKDTree(vertices[nodes[:, 1]]).query_pairs(join, output_type="ndarray")
+    near = near[nodes[near[:, 0], 0] == nodes[near[:, 1], 0]]
+    a = np.r_[node_of[:, 0], near[:, 0]]
+    b = np.r_[node_of[:, 1], near[:, 1]]
+    graph = coo_matrix((np.ones(len(a)), (a, b)), shape=(len(nodes), len(nodes)))
+    _, node_label = connected_components(graph, directed=False)
+    label = node_label[node_of[:, 0]]
     order = np.argsort(label, kind="stable")
     bounds = np.searchsorted(label[order], np.arange(label.max() + 2))
     seg = np.linalg.norm(vertices[pairs[:, 0]] - vertices[pairs[:, 1]], axis=1)

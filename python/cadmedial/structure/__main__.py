@@ -1,0 +1,56 @@
+"""python -m cadmedial.structure PART [--samples N | --spacing S] [--json OUT] [--repeat K]
+
+Computes the axis of PART, then its structure; prints both times (each the fastest of K runs:
+the machine may be shared) and the counts, the largest sheets, the seams and the curves."""
+
+import argparse
+import json
+import sys
+import time
+
+import cadmedial
+
+from .analysis import structure
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="python -m cadmedial.structure", description=__doc__)
+    parser.add_argument("part", help="STEP, IGES or BREP file")
+    parser.add_argument("--samples", type=int)
+    parser.add_argument("--spacing", type=float)
+    parser.add_argument("--json", help="write the tables (AxisStructure.to_dict()) here")
+    parser.add_argument("--repeat", type=int, default=1, help="time each step K times")
+    args = parser.parse_args(argv)
+    compute_times = []
+    for _ in range(max(args.repeat, 1)):
+        start = time.perf_counter()
+        result = cadmedial.compute(args.part, spacing=args.spacing, samples=args.samples)
+        compute_times.append(time.perf_counter() - start)
+    compute_s = min(compute_times)
+    times = []
+    for _ in range(max(args.repeat, 1)):
+        start = time.perf_counter()
+        s = structure(result)
+        times.append(time.perf_counter() - start)
+    print("%s: %d vertices, %d faces, %d edges; spacing %.4g" % (
+        args.part, result.num_vertices, result.num_faces, result.num_edges, s.spacing))
+    print("compute %.2f s, structure %.2f s (%.0f %%)" % (
+        compute_s, min(times), 100 * min(times) / compute_s))
+    print(", ".join("%d %s" % (n, k) for k, n in s.counts().items()))
+    for k, d in enumerate(s.sheets[:10]):
+        print("  sheet %d: %d faces, area %.4g, radius %.4g..%.4g, flatness %.3g, %d seams" % (
+            k, d["faces"], d["area"], d["radius_min"], d["radius_max"], d["flatness"],
+            len(d["seams"])))
+    for k, d in enumerate(s.seams[:10]):
+        print("  seam %d: length %.4g, sheets %s" % (k, d["length"], d["sheets"]))
+    for k, d in enumerate(s.curves[:10]):
+        print("  curve %d (%s): length %.4g, radius %.4g..%.4g" % (
+            k, d["source"], d["length"], d["radius_min"], d["radius_max"]))
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(s.to_dict(), f)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
