@@ -44,7 +44,7 @@ def __getattr__(name):
     # cadmedial.structure (callable too: structure(result)) scipy: only on use.
     if name in ("thickness", "structure"):
         import importlib
-        return importlib.import_module(__name__ + ".thickness")
+        return importlib.import_module(__name__ + "." + name)
     raise AttributeError("module 'cadmedial' has no attribute %r" % name)
 
 __all__ = [

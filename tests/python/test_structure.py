@@ -318,3 +318,19 @@ def test_labels_follow_the_edges_and_the_tables_are_plain_data(tmp_path):
     text = json.dumps(s.to_dict())
     back = json.loads(text)
     assert len(back["sheets"]) == 13 and back["spacing"] == s.spacing
+
+
+def test_cadmedial_structure_loads_on_first_use(tmp_path):
+    """``import cadmedial`` alone: cadmedial.structure(result) is the structure (the attribute
+    loads the subpackage), with the counts computed in this process for the same file."""
+    import subprocess
+    result = cadmedial.compute(Part.makeBox(40, 25, 15), samples=3000)
+    path = tmp_path / "box.ply"
+    result.save(path)
+    expected = cadmedial.structure(cadmedial.load(path)).counts()
+    code = ("import json, sys, cadmedial; assert 'cadmedial.structure' not in sys.modules; "
+            "print(json.dumps(cadmedial.structure(cadmedial.load(sys.argv[1])).counts()))")
+    out = subprocess.run([sys.executable, "-c", code, str(path)], capture_output=True, text=True,
+                         check=True, env=dict(os.environ))
+    assert json.loads(out.stdout) == expected
+    assert expected["sheets"] == 13

@@ -1,4 +1,4 @@
-"""python -m cadmedial.structure PART [--samples N | --spacing S] [--json OUT] [--repeat K]
+"""python -m cadmedial.structure PART [--samples N | --spacing S] [--json OUT] [--repeat K] [--raw]
 
 Computes the axis of PART, then its structure; prints both times (each the fastest of K runs:
 the machine may be shared) and the counts, the largest sheets, the seams and the curves."""
@@ -20,6 +20,8 @@ def main(argv=None):
     parser.add_argument("--spacing", type=float)
     parser.add_argument("--json", help="write the tables (AxisStructure.to_dict()) here")
     parser.add_argument("--repeat", type=int, default=1, help="time each step K times")
+    parser.add_argument("--raw", action="store_true",
+                        help="also print the counts without merging slivers (merge_slivers=False)")
     args = parser.parse_args(argv)
     compute_times = []
     for _ in range(max(args.repeat, 1)):
@@ -37,6 +39,9 @@ def main(argv=None):
     print("compute %.2f s, structure %.2f s (%.0f %%)" % (
         compute_s, min(times), 100 * min(times) / compute_s))
     print(", ".join("%d %s" % (n, k) for k, n in s.counts().items()))
+    if args.raw:
+        raw = structure(result, merge_slivers=False)
+        print("raw: " + ", ".join("%d %s" % (n, k) for k, n in raw.counts().items()))
     for k, d in enumerate(s.sheets[:10]):
         print("  sheet %d: %d faces, area %.4g, radius %.4g..%.4g, flatness %.3g, %d seams" % (
             k, d["faces"], d["area"], d["radius_min"], d["radius_max"], d["flatness"],
