@@ -135,7 +135,8 @@ def match_planar_sheets(result, s, exact, tol):
         rms = np.array([np.sqrt(np.mean((v @ normal - offset) ** 2)) for v in points])
         on_plane = np.flatnonzero(rms < tol)
         assert len(on_plane), (normal, offset, rms.min())
-        k = min(on_plane, key=lambda k: np.linalg.norm(np.array(s.sheets[k]["centroid"]) - centroid))
+        k = min(on_plane,
+                key=lambda k: np.linalg.norm(np.array(s.sheets[k]["centroid"]) - centroid))
         pairs.append((area, int(k)))
     assert len({k for _, k in pairs}) == len(exact)
     return pairs

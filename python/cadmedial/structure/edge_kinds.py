@@ -18,10 +18,11 @@ def classify_edges(table, sheet, core, kind, radius, rim_radius):
     An edge of three or more sheet faces is a seam when they belong to two distinct sheets or
     more, and three of them are core faces or three distinct sheets: a sliver merged into the
     sheet it hangs from does not make a seam of its border, nor does a fold of one sheet onto
-    itself (measured on filletBox: 182 seams shorter than a spacing, all of one sheet, along its
-    fillets' centre curves). Two sheets can meet at a real seam (a rib ending inside a plate: the
-    plate's sheet runs round the rib's end and lies on two sides of the seam). An edge with tube faces only, or with one sheet face beside tube faces, is TUBE (the
-    place where a sheet meets a curve of the axis)."""
+    itself (measured on filletBox: 180 seams shorter than a spacing, all of one sheet, along its
+    fillet's centre curve). Two sheets can meet at a real seam (a rib ending inside a plate: the
+    plate's sheet runs round the rib's end and lies on two sides of the seam). An edge with tube
+    faces only, or with one sheet face beside tube faces, is TUBE (the place where a sheet meets
+    a curve of the axis)."""
     f = table.faces
     edge_of = np.repeat(np.arange(len(table)), table.count)
     in_sheet = sheet[f] >= 0
