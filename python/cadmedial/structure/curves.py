@@ -4,6 +4,7 @@ line they hug."""
 import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import dijkstra
+from scipy.spatial import cKDTree
 
 from .chains import chain, polyline_length
 
@@ -73,34 +74,53 @@ def _tubes_of(c):
 def link_curves(curves, vertices, radius, gap):
     """curves with those whose ends are less than ``gap`` apart joined end to end (a curve that
     comes out partly as 1-D edges and partly as a tube: the torus's core circle), and a curve
-    whose two ends are that close closed. Joined curves get source "edges+tube" and "tubes": the
-    ids of the tubes (key "tube" of a tube's curve) they hold."""
-    curves = list(curves)
-    while True:
-        best = None
-        ends = [(i, side) for i, c in enumerate(curves) if not c["closed"] for side in (0, -1)]
-        for x in range(len(ends)):
-            for y in range(x + 1, len(ends)):
-                (i, si), (j, sj) = ends[x], ends[y]
-                d = np.linalg.norm(vertices[curves[i]["vertices"][si]] -
-                                   vertices[curves[j]["vertices"][sj]])
-                if d < gap and (best is None or d < best[0]):
-                    best = (d, i, si, j, sj)
-        if best is None:
-            return curves
-        _, i, si, j, sj = best
-        a, b = curves[i], curves[j]
-        if i == j:
-            path = np.r_[a["vertices"], a["vertices"][:1]]
-            merged = _curve(vertices, radius, path, a["source"], closed=True)
-        else:
-            pa = a["vertices"] if si == -1 else a["vertices"][::-1]
-            pb = b["vertices"] if sj == 0 else b["vertices"][::-1]
-            source = a["source"] if a["source"] == b["source"] else "edges+tube"
-            merged = _curve(vertices, radius, np.r_[pa, pb], source)
-        merged["faces"] = a.get("faces", 0) + (b.get("faces", 0) if i != j else 0)
-        merged["tubes"] = _tubes_of(a) + (_tubes_of(b) if i != j else [])
-        curves = [c for k, c in enumerate(curves) if k not in (i, j)] + [merged]
+    whose two ends are that close closed. Joined curves get source "edges+tube" (or their common
+    source) and "tubes": the ids of the tubes (key "tube" of a tube's curve) they hold.
+
+    Each end links to at most one other, nearest pairs first; then curves and links form paths
+    of end nodes (node 2i and 2i+1 are curve i's ends), chained like any edges. Longest first."""
+    open_ids = [i for i, c in enumerate(curves) if not c["closed"]]
+    if not open_ids:
+        return sorted(curves, key=lambda c: -c["length"])
+    ends = np.array([[curves[i]["vertices"][0], curves[i]["vertices"][-1]] for i in open_ids])
+    points = vertices[ends.ravel()]
+    near = cKDTree(points).query_pairs(gap, output_type="ndarray")
+    d = np.linalg.norm(points[near[:, 0]] - points[near[:, 1]], axis=1) if len(near) else []
+    taken = np.zeros(len(points), dtype=bool)
+    links = []
+    for k in np.argsort(d, kind="stable").tolist():
+        a, b = near[k]
+        if not taken[a] and not taken[b]:
+            taken[a] = taken[b] = True
+            links.append((a, b))
+    if not links:
+        return sorted(curves, key=lambda c: -c["length"])
+    own = np.stack([np.arange(0, len(points), 2), np.arange(1, len(points), 2)], axis=1)
+    graph = np.concatenate([own, np.array(links, dtype=np.int64)])
+    out = [c for c in curves if c["closed"]]
+    for nodes, rows, closed in chain(graph, len(points)):
+        path, tubes, faces, sources = [], [], 0, set()
+        for r, (u, v) in zip(rows.tolist(), zip(nodes[:-1].tolist(), nodes[1:].tolist())):
+            if r >= len(own):
+                continue  # a link: the next curve starts where this one ended
+            c = curves[open_ids[r]]
+            piece = c["vertices"] if u % 2 == 0 else c["vertices"][::-1]
+            path.append(piece if not path else piece[1:] if piece[0] == path[-1][-1] else piece)
+            tubes += _tubes_of(c)
+            faces += c.get("faces", 0)
+            sources.add(c["source"])
+        path = np.concatenate(path)
+        if closed and path[0] != path[-1]:
+            path = np.r_[path, path[:1]]
+        merged = _curve(vertices, radius, path,
+                        sources.pop() if len(sources) == 1 else "edges+tube", closed)
+        if faces:
+            merged["faces"] = faces
+        if tubes:
+            merged["tubes"] = tubes
+        out.append(merged)
+    out.sort(key=lambda c: -c["length"])
+    return out
 
 
 def tube_curves(table, tube, vertices, radius, spacing):
