@@ -335,3 +335,22 @@ def test_cadmedial_structure_loads_on_first_use(tmp_path):
                          check=True, env=dict(os.environ))
     assert json.loads(out.stdout) == expected
     assert expected["sheets"] == 13
+
+
+def test_each_sheet_and_curve_names_its_solid():
+    """Two solids, a box and a cylinder apart: the box's 13 sheets are of solid 0 or 1 and the
+    cylinder's two cones and axis of the other; faces of a sheet are all of its solid."""
+    box = Part.makeBox(40, 25, 15)
+    rod = Part.makeCylinder(5, 40, FreeCAD.Vector(100, 0, 0))
+    result = cadmedial.compute(Part.makeCompound([box, rod]), samples=20000)
+    s = cadmedial.structure(result)
+    h = s.spacing
+    by_solid = {}
+    for k, d in enumerate(s.sheets):
+        assert np.all(result.face_solid[s.face_sheet == k] == d["solid"])
+        by_solid.setdefault(d["solid"], []).append(k)
+    assert sorted(len(v) for v in by_solid.values()) == [2, 13]
+    rod_solid = [k for k, v in by_solid.items() if len(v) == 2][0]
+    assert len(s.curves) == 1 and s.curves[0]["solid"] == rod_solid
+    assert s.curves[0]["length"] == pytest.approx(30, abs=2 * h)
+    assert all(c["centroid"][0] > 90 for c in (s.sheets[k] for k in by_solid[rod_solid]))

@@ -24,10 +24,11 @@ class AxisStructure:
     sheets      list of dicts, index = sheet id: faces, area, radius_min, radius_max,
                 centroid [x, y, z] (mean of its vertices), normal, flatness (RMS distance of its
                 vertices to their least-squares plane), completion_faces, seams (ids),
-                rim_length, free_length, slivers (raw sheets merged into it)
+                rim_length, free_length, slivers (raw sheets merged into it), solid (index of
+                the input solid)
     seams       list of dicts: vertices (P,) int64 polyline, length, sheets (ids, most edges
                 first), sheet_edges (how many of its edges each of them holds), closed,
-                ends [junction id or -1, junction id or -1]
+                ends [junction id or -1, junction id or -1], solid
     junctions   list of dicts: vertex, vertices (near-duplicates merged into it), point
                 [x, y, z], radius, seam_degree (seam ends at it: 1 a seam's end, 3 or more where
                 seams meet), curve_ends (curves ending at it), sheets (ids of its faces)
@@ -35,7 +36,7 @@ class AxisStructure:
                 closed, span, radius_min, radius_max
     curves      list of dicts: source ("edges": the result's 1-D edges; "tube": sliver faces),
                 vertices (P,) polyline, length, radius_min, radius_max, radius_mean, closed,
-                ends, faces (tubes only)
+                ends, faces (tubes only), solid; longest first
     spacing     the sample spacing h the tolerances are relative to
     """
 
@@ -175,6 +176,17 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
             sheets[b["sheet"]][key] += b["length"]
         return out
 
+    # The input solid of each table row (an assembly's solids share no vertex).
+    vertex_solid = np.full(n_vertices, -1, dtype=np.int64)
+    vertex_solid[np.asarray(result.edges, dtype=np.int64).ravel()] = np.repeat(
+        np.asarray(result.edge_solid, dtype=np.int64), 2)
+    vertex_solid[corner] = np.asarray(result.face_solid, dtype=np.int64)[rows]
+    ids, first = np.unique(sheet[rows], return_index=True)  # each sheet's first corner
+    for k, at in zip(ids.tolist(), first.tolist()):
+        if k >= 0:
+            sheets[k]["solid"] = int(vertex_solid[corner[at]])
+    for d in seams + curves:
+        d["solid"] = int(vertex_solid[d["vertices"][0]])
     return AxisStructure(face_sheet=sheet, face_curve=face_curve, edges=table.pairs,
                          edge_kind=kinds, edge_kind_names=dict(NAMES), sheets=sheets, seams=seams,
                          junctions=junctions, rims=borders(RIM, "rim_length"),
