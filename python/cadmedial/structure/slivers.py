@@ -39,16 +39,13 @@ def _sheet_pairs(table, labels):
     return np.concatenate(rows).astype(np.int64)
 
 
-def sheet_boxes(labels, count, vertices, faces):
-    """(centroid (S, 3) mean of corners, diagonal (S,) of the bounding box) of each sheet."""
-    rows = face_vertex_rows(faces)
+def sheet_centres(labels, count, vertices, faces):
+    """(S, 3) mean of the corners of each sheet's faces."""
+    s = labels[face_vertex_rows(faces)]
     corners = vertices[np.asarray(faces.indices)]
-    s = labels[rows]
-    lo, hi = grouped_extremes(s, corners, count)
-    n = np.bincount(s, minlength=count)[:, None]
-    centre = np.stack([np.bincount(s, weights=corners[:, k], minlength=count) for k in range(3)],
-                      axis=1) / np.maximum(n, 1)
-    return centre, np.linalg.norm(hi - lo, axis=1)
+    n = np.maximum(np.bincount(s, minlength=count), 1)
+    return np.stack([np.bincount(s, weights=corners[:, k], minlength=count) / n
+                     for k in range(3)], axis=1)
 
 
 def resolve_slivers(table, labels, count, area, vertices, faces, spacing,
@@ -63,7 +60,7 @@ def resolve_slivers(table, labels, count, area, vertices, faces, spacing,
     core = ~small[labels]
     if not small.any():
         return labels.copy(), np.full(len(labels), -1, dtype=np.int64), core
-    centre, _ = sheet_boxes(labels, count, vertices, faces)
+    centre = sheet_centres(labels, count, vertices, faces)
     pairs = _sheet_pairs(table, labels)
     a, b, e = pairs[:, 0], pairs[:, 1], pairs[:, 2]
     # Only links that touch a sliver matter; a real sheet's position is where it meets the sliver
@@ -75,11 +72,13 @@ def resolve_slivers(table, labels, count, area, vertices, faces, spacing,
     pb = np.where(small[b][:, None], centre[b], mid)
     w = np.linalg.norm(pa - pb, axis=1) + 1e-12 * spacing  # 0 would drop the link
     # Keep the shortest of parallel links (coo_matrix would add them up).
-    order = np.lexsort((w, np.maximum(a, b), np.minimum(a, b)))
-    lo, hi, w = np.minimum(a, b)[order], np.maximum(a, b)[order], w[order]
-    first = np.r_[True, (lo[1:] != lo[:-1]) | (hi[1:] != hi[:-1])]
-    lo, hi, w = lo[first], hi[first], w[first]
-    graph = coo_matrix((w, (lo, hi)), shape=(count, count)).tocsr()
+    key = np.minimum(a, b) * count + np.maximum(a, b)
+    order = np.argsort(key)
+    key, w = key[order], w[order]
+    starts = np.flatnonzero(np.r_[True, key[1:] != key[:-1]]) if len(key) else \
+        np.zeros(0, dtype=np.int64)
+    w = np.minimum.reduceat(w, starts) if len(key) else w
+    lo, hi = key[starts] // count, key[starts] % count
     sources = np.flatnonzero(~small)
     new = np.arange(count, dtype=np.int64)
     left = small.copy()
@@ -93,7 +92,6 @@ def resolve_slivers(table, labels, count, area, vertices, faces, spacing,
         joined = small & (dist <= reach * spacing) & (source >= 0)
         new[joined] = source[joined]
         left &= ~joined
-    del graph
     # Clusters of the slivers left, joined through the links between two of them.
     keep = left[lo] & left[hi]
     n_left = int(left.sum())
