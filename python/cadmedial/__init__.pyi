@@ -95,6 +95,7 @@ class _StructureModule:
         reach: float = ...,
         tube_length: float = ...,
         join: float = ...,
+        shape: Optional[Source] = ...,
     ) -> AxisStructure: ...
     def structure(
         self,
@@ -106,6 +107,7 @@ class _StructureModule:
         reach: float = ...,
         tube_length: float = ...,
         join: float = ...,
+        shape: Optional[Source] = ...,
     ) -> AxisStructure: ...
 
 class AxisStructure:

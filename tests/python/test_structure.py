@@ -78,7 +78,8 @@ def polygon_area_centroid(corners):
 
 def exact_box_axis(a, b, c):
     """The exact axis of the box [0,a]x[0,b]x[0,c], a >= b > c (see the module docstring):
-    sheets [(normal, offset, corners)], seams [(p, q)], meeting points, box corners."""
+    sheets [(normal, offset, area, centroid)], seams [(p, q)], meeting points, box corners, and
+    for each sheet the pair of box_faces() it bisects."""
     faces = box_faces(a, b, c)
     size = np.array([a, b, c], dtype=float)
     h = c / 2
@@ -87,7 +88,7 @@ def exact_box_axis(a, b, c):
     def nearest_meet(p):
         return min(meet, key=lambda m: np.linalg.norm(m - p))
 
-    sheets = [(*bisector(faces[4], faces[5]), [meet[0], meet[1], meet[3], meet[2]])]
+    sheets = [(*bisector(faces[4], faces[5]), [meet[0], meet[1], meet[3], meet[2]], (4, 5))]
     for i in range(6):
         for j in range(i + 1, 6):
             ki, kj = i // 2, j // 2
@@ -101,13 +102,13 @@ def exact_box_axis(a, b, c):
             corners = [p, q, nearest_meet(q)]
             if np.linalg.norm(nearest_meet(q) - nearest_meet(p)) > 0:
                 corners.append(nearest_meet(p))  # a trapezoid, else a triangle
-            sheets.append((*bisector(faces[i], faces[j]), corners))
+            sheets.append((*bisector(faces[i], faces[j]), corners, (i, j)))
     seams = [(meet[0], meet[1]), (meet[2], meet[3]), (meet[0], meet[2]), (meet[1], meet[3])]
     corners = [np.array([x, y, z]) for x in (0, a) for y in (0, b) for z in (0, c)]
     for p in corners:
         seams.append((p, nearest_meet(p)))
-    return ([(n, d, *polygon_area_centroid(poly)) for n, d, poly in sheets],
-            seams, meet, corners)
+    return ([(n, d, *polygon_area_centroid(poly)) for n, d, poly, _ in sheets],
+            seams, meet, corners, [pair for *_, pair in sheets])
 
 
 def segment_distance(points, p, q):
@@ -179,7 +180,7 @@ def test_box_has_the_sheets_seams_and_junctions_of_its_exact_axis(samples):
     measured 1.7 %)."""
     result, s = axis_of(Part.makeBox(40, 25, 15), samples)
     h = s.spacing
-    sheets, seams, meet, corners = exact_box_axis(40, 25, 15)
+    sheets, seams, meet, corners, _ = exact_box_axis(40, 25, 15)
     assert s.counts() == {"sheets": 13, "seams": 12, "junctions": 12, "rims": 12, "free": 0,
                           "curves": 0}
     for area, k in match_planar_sheets(result, s, sheets, 0.2 * h):
@@ -202,7 +203,7 @@ def test_plate_is_one_big_sheet_with_narrow_rim_bands():
     edge sheets are bands 1.5 * sqrt(2) wide along the rim (module docstring)."""
     result, s = axis_of(Part.makeBox(60, 40, 3))
     h = s.spacing
-    sheets, seams, meet, corners = exact_box_axis(60, 40, 3)
+    sheets, seams, meet, corners, _ = exact_box_axis(60, 40, 3)
     assert len(s.sheets) == 13 and len(s.seams) == 12 and len(s.rims) == 12
     pairs = match_planar_sheets(result, s, sheets, 0.2 * h)
     for area, k in pairs:
@@ -225,7 +226,7 @@ def test_block_with_hole_has_a_ring_sheet_two_cones_and_a_circular_seam():
     hole = Part.makeCylinder(5, 10, FreeCAD.Vector(20, 20, 0))
     result, s = axis_of(Part.makeBox(40, 40, 10).cut(hole))
     h = s.spacing
-    sheets, seams, meet, corners = exact_box_axis(40, 40, 10)
+    sheets, seams, meet, corners, _ = exact_box_axis(40, 40, 10)
     sheets[0] = (sheets[0][0], sheets[0][1], 30 * 30 - math.pi * 10 ** 2, sheets[0][3])
     assert s.counts() == {"sheets": 15, "seams": 13, "junctions": 12, "rims": 14, "free": 0,
                           "curves": 0}
@@ -354,3 +355,34 @@ def test_each_sheet_and_curve_names_its_solid():
     assert len(s.curves) == 1 and s.curves[0]["solid"] == rod_solid
     assert s.curves[0]["length"] == pytest.approx(30, abs=2 * h)
     assert all(c["centroid"][0] > 90 for c in (s.sheets[k] for k in by_solid[rod_solid]))
+
+
+def test_sheets_name_the_two_faces_their_balls_touch():
+    """With shape=: each sheet of the 40 x 25 x 15 box touches exactly the two faces it bisects
+    (about half the probes each); the cylinder's cones touch its side and one end disk."""
+    box = Part.makeBox(40, 25, 15)
+    result = cadmedial.compute(box, samples=20000)
+    s = cadmedial.structure(result, shape=box)
+    h = s.spacing
+    sheets, _, _, _, pairs = exact_box_axis(40, 25, 15)
+    planes = box_faces(40, 25, 15)
+
+    def plane_index(face):
+        n = np.array(face.normalAt(0, 0))
+        d = n @ np.array(face.CenterOfMass)
+        return min(range(6), key=lambda k: np.linalg.norm(planes[k][0] - n) + abs(planes[k][1] - d))
+
+    name = [plane_index(f) for f in box.Faces]
+    for (area, k), pair in zip(match_planar_sheets(result, s, sheets, 0.2 * h), pairs):
+        touches = s.sheets[k]["touches"]
+        assert sorted(name[f] for f, _ in touches) == sorted(pair)
+        assert all(share == pytest.approx(0.5, abs=0.05) for _, share in touches)
+    rod = Part.makeCylinder(5, 40)
+    result = cadmedial.compute(rod, samples=20000)
+    s = cadmedial.structure(result, shape=rod)
+    kinds = {f: type(face.Surface).__name__ for f, face in enumerate(rod.Faces)}
+    for cone in s.sheets:
+        touched = sorted(kinds[f] for f, share in cone["touches"] if share > 0.3)
+        assert touched == ["Cylinder", "Plane"]
+        disk = [f for f, _ in cone["touches"] if kinds[f] == "Plane"][0]
+        assert abs(rod.Faces[disk].CenterOfMass.z - cone["centroid"][2]) < 5

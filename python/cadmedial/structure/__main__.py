@@ -1,4 +1,5 @@
 """python -m cadmedial.structure PART [--samples N | --spacing S] [--json OUT] [--repeat K] [--raw]
+    [--touches]
 
 Computes the axis of PART, then its structure; prints both times (each the fastest of K runs:
 the machine may be shared) and the counts, the largest sheets, the seams and the curves."""
@@ -20,6 +21,8 @@ def main(argv=None):
     parser.add_argument("--spacing", type=float)
     parser.add_argument("--json", help="write the tables (AxisStructure.to_dict()) here")
     parser.add_argument("--repeat", type=int, default=1, help="time each step K times")
+    parser.add_argument("--touches", action="store_true",
+                        help="name the B-rep faces each sheet's balls touch (structure(shape=))")
     parser.add_argument("--raw", action="store_true",
                         help="also print the counts without merging slivers (merge_slivers=False)")
     args = parser.parse_args(argv)
@@ -32,7 +35,7 @@ def main(argv=None):
     times = []
     for _ in range(max(args.repeat, 1)):
         start = time.perf_counter()
-        s = structure(result)
+        s = structure(result, shape=args.part if args.touches else None)
         times.append(time.perf_counter() - start)
     print("%s: %d vertices, %d faces, %d edges; spacing %.4g" % (
         args.part, result.num_vertices, result.num_faces, result.num_edges, s.spacing))
@@ -43,9 +46,10 @@ def main(argv=None):
         raw = structure(result, merge_slivers=False)
         print("raw: " + ", ".join("%d %s" % (n, k) for k, n in raw.counts().items()))
     for k, d in enumerate(s.sheets[:10]):
-        print("  sheet %d: %d faces, area %.4g, radius %.4g..%.4g, flatness %.3g, %d seams" % (
+        print("  sheet %d: %d faces, area %.4g, radius %.4g..%.4g, flatness %.3g, %d seams%s" % (
             k, d["faces"], d["area"], d["radius_min"], d["radius_max"], d["flatness"],
-            len(d["seams"])))
+            len(d["seams"]), "".join(", Face%d %.0f %%" % (f + 1, 100 * share)
+                                     for f, share in d.get("touches", []))))
     for k, d in enumerate(s.seams[:10]):
         print("  seam %d: length %.4g, sheets %s" % (k, d["length"], d["sheets"]))
     for k, d in enumerate(s.curves[:10]):

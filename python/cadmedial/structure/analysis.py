@@ -9,6 +9,7 @@ from .edge_table import edge_table
 from .junctions import seams_and_junctions
 from .sheets import face_areas, face_vertex_rows, raw_sheets, renumber_by_size, sheet_table
 from .slivers import resolve_slivers
+from .touching import touching_faces
 
 TABLES = ("sheets", "seams", "junctions", "rims", "free", "curves")
 
@@ -25,7 +26,7 @@ class AxisStructure:
                 centroid [x, y, z] (mean of its vertices), normal, flatness (RMS distance of its
                 vertices to their least-squares plane), completion_faces, seams (ids),
                 rim_length, free_length, slivers (raw sheets merged into it), solid (index of
-                the input solid)
+                the input solid), touches (with shape=: [[face index, share], ...])
     seams       list of dicts: vertices (P,) int64 polyline, length, sheets (ids, most edges
                 first), sheet_edges (how many of its edges each of them holds), closed,
                 ends [junction id or -1, junction id or -1], solid
@@ -82,7 +83,7 @@ def _spacing_of(result, spacing, table):
 
 
 def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_area=2.0,
-              reach=1.0, tube_length=3.0, join=1.0):
+              reach=1.0, tube_length=3.0, join=1.0, shape=None):
     """AxisStructure of ``result`` (a MedialAxisResult).
 
     spacing        length unit h of the tolerances; None: result.stats["spacing"] (for a loaded
@@ -95,6 +96,10 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
                    a completion face's; else a free border
     join           seams shorter than join * h between two meeting points are contracted
                    (junctions.py); border edges of a sheet closer than that are one border
+    shape          None, or the source the axis was computed from (as for compute(): a path,
+                   BREP text, a Part.Shape, a _core.Shape): then each sheet also gets
+                   "touches", [[face index, share], ...], the faces of its solid its balls touch
+                   (touching.py; for a wall its two faces, about half the probes each)
     """
     vertices = np.asarray(result.vertices, dtype=np.float64)
     radius = np.asarray(result.radius, dtype=np.float64)
@@ -187,6 +192,12 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
             sheets[k]["solid"] = int(vertex_solid[corner[at]])
     for d in seams + curves:
         d["solid"] = int(vertex_solid[d["vertices"][0]])
+    if shape is not None:
+        from .. import _core
+        from ..api import read_shape
+        solids = _core.extract_solids(read_shape(shape))
+        for d, touches in zip(sheets, touching_faces(result, sheet, n_sheets, solids)):
+            d["touches"] = touches
     return AxisStructure(face_sheet=sheet, face_curve=face_curve, edges=table.pairs,
                          edge_kind=kinds, edge_kind_names=dict(NAMES), sheets=sheets, seams=seams,
                          junctions=junctions, rims=borders(RIM, "rim_length"),
