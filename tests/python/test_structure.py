@@ -359,7 +359,8 @@ def test_each_sheet_and_curve_names_its_solid():
 
 def test_sheets_name_the_two_faces_their_balls_touch():
     """With shape=: each sheet of the 40 x 25 x 15 box touches exactly the two faces it bisects
-    (about half the probes each); the cylinder's cones touch its side and one end disk."""
+    (about half the probes each), each rim names the two faces of the edge it lies on; the
+    cylinder's cones touch its side and one end disk."""
     box = Part.makeBox(40, 25, 15)
     result = cadmedial.compute(box, samples=20000)
     s = cadmedial.structure(result, shape=box)
@@ -377,6 +378,15 @@ def test_sheets_name_the_two_faces_their_balls_touch():
         touches = s.sheets[k]["touches"]
         assert sorted(name[f] for f, _ in touches) == sorted(pair)
         assert all(share == pytest.approx(0.5, abs=0.05) for _, share in touches)
+    # Each rim lies on the B-rep edge between the two faces it names.
+    assert len(s.rims) == 12
+    for rim in s.rims:
+        f, g = sorted(f for f, _ in rim["touches"])
+        assert len(rim["touches"]) == 2
+        edge = [e for e in box.Faces[f].Edges if any(e.isSame(x) for x in box.Faces[g].Edges)]
+        assert len(edge) == 1
+        ends = [Part.Vertex(*result.vertices[v]) for v in np.unique(rim["edges"])]
+        assert max(edge[0].distToShape(v)[0] for v in ends) < 1e-9 * 40
     rod = Part.makeCylinder(5, 40)
     result = cadmedial.compute(rod, samples=20000)
     s = cadmedial.structure(result, shape=rod)
@@ -386,3 +396,5 @@ def test_sheets_name_the_two_faces_their_balls_touch():
         assert touched == ["Cylinder", "Plane"]
         disk = [f for f, _ in cone["touches"] if kinds[f] == "Plane"][0]
         assert abs(rod.Faces[disk].CenterOfMass.z - cone["centroid"][2]) < 5
+    for rim in s.rims:  # the circular edges, between the side and a disk
+        assert sorted(kinds[f] for f, _ in rim["touches"]) == ["Cylinder", "Plane"]

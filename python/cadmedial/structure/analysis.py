@@ -9,7 +9,7 @@ from .edge_table import edge_table
 from .junctions import seams_and_junctions
 from .sheets import face_areas, face_vertex_rows, raw_sheets, renumber_by_size, sheet_table
 from .slivers import resolve_slivers
-from .touching import touching_faces
+from .touching import touching, touching_faces
 
 TABLES = ("sheets", "seams", "junctions", "rims", "free", "curves")
 
@@ -34,7 +34,8 @@ class AxisStructure:
                 [x, y, z], radius, seam_degree (seam ends at it: 1 a seam's end, 3 or more where
                 seams meet), curve_ends (curves ending at it), sheets (ids of its faces)
     rims, free  lists of dicts (see borders.group_borders): sheet, length, edges, vertices,
-                closed, span, radius_min, radius_max
+                closed, span, radius_min, radius_max; rims with shape=: touches, the faces
+                beside it (two for a rim along one convex edge: that edge's faces)
     curves      list of dicts: source ("edges": the result's 1-D edges; "tube": sliver faces),
                 vertices (P,) polyline, length, radius_min, radius_max, radius_mean, closed,
                 ends, faces (tubes only), solid; longest first
@@ -99,7 +100,8 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
     shape          None, or the source the axis was computed from (as for compute(): a path,
                    BREP text, a Part.Shape, a _core.Shape): then each sheet also gets
                    "touches", [[face index, share], ...], the faces of its solid its balls touch
-                   (touching.py; for a wall its two faces, about half the probes each)
+                   (touching.py; for a wall its two faces, about half the probes each), and
+                   each rim the faces beside it (those of the convex edge it lies on)
     """
     vertices = np.asarray(result.vertices, dtype=np.float64)
     radius = np.asarray(result.radius, dtype=np.float64)
@@ -181,6 +183,7 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
             sheets[b["sheet"]][key] += b["length"]
         return out
 
+    rims = borders(RIM, "rim_length")
     # The input solid of each table row (an assembly's solids share no vertex).
     vertex_solid = np.full(n_vertices, -1, dtype=np.int64)
     vertex_solid[np.asarray(result.edges, dtype=np.int64).ravel()] = np.repeat(
@@ -198,7 +201,13 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
         solids = _core.extract_solids(read_shape(shape))
         for d, touches in zip(sheets, touching_faces(result, sheet, n_sheets, solids)):
             d["touches"] = touches
+        # A rim's faces: the one face of each of its edges (rows found by their sorted keys).
+        keys = table.pairs[:, 0] * n_vertices + table.pairs[:, 1]
+        groups = [table.first_faces(np.searchsorted(keys, b["edges"][:, 0] * n_vertices
+                                                    + b["edges"][:, 1])) for b in rims]
+        for b, touches in zip(rims, touching(result, groups, solids)):
+            b["touches"] = touches
     return AxisStructure(face_sheet=sheet, face_curve=face_curve, edges=table.pairs,
                          edge_kind=kinds, edge_kind_names=dict(NAMES), sheets=sheets, seams=seams,
-                         junctions=junctions, rims=borders(RIM, "rim_length"),
+                         junctions=junctions, rims=rims,
                          free=borders(FREE, "free_length"), curves=curves, spacing=h)

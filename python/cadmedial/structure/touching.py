@@ -34,36 +34,34 @@ def _face_frames(vertices, radius, faces, picked):
     return centre, normal / np.maximum(length, 1e-300)[:, None], r, length > 0
 
 
-def touching_faces(result, face_sheet, n_sheets, solids, per_sheet=64, min_share=0.1):
-    """Per sheet, a list of [face index, share]: the faces of its solid (in the solid's own face
-    order, that of FreeCAD's solid.Faces) nearest to its faces' two sides, the share of the
-    probes that met each, largest first, those under ``min_share`` left out.
+def touching(result, groups, solids, per_group=64, min_share=0.1):
+    """Per group of axis faces (a list of (k,) int arrays), a list of [face index, share]: the
+    faces of its solid (in the solid's own face order, that of FreeCAD's solid.Faces) nearest to
+    its faces' two sides, with the share of the probes that met each, largest first, those under
+    ``min_share`` left out. At most ``per_group`` faces of a group are probed, evenly spread.
 
     solids: the engine's solids (``_core.extract_solids``), indexed by result.face_solid."""
     from .. import _core
     vertices = np.asarray(result.vertices, dtype=np.float64)
     radius = np.asarray(result.radius, dtype=np.float64)
-    kind = np.asarray(result.face_kind)
     solid_of = np.asarray(result.face_solid)
-    out = [[] for _ in range(n_sheets)]
-    usable = (face_sheet >= 0) & (kind == 0)
-    order = np.argsort(face_sheet, kind="stable")
-    order = order[usable[order]]
-    bounds = np.searchsorted(face_sheet[order], np.arange(n_sheets + 1))
-    picked, sheet_of = [], []
-    for s in range(n_sheets):
-        mine = order[bounds[s]:bounds[s + 1]]
-        if len(mine) > per_sheet:
-            mine = mine[np.linspace(0, len(mine) - 1, per_sheet).round().astype(np.int64)]
+    out = [[] for _ in groups]
+    picked, group_of = [], []
+    for g, mine in enumerate(groups):
+        mine = np.asarray(mine, dtype=np.int64)
+        if len(mine) > per_group:
+            mine = mine[np.linspace(0, len(mine) - 1, per_group).round().astype(np.int64)]
         picked.append(mine)
-        sheet_of.append(np.full(len(mine), s))
+        group_of.append(np.full(len(mine), g, dtype=np.int64))
     if not picked:
         return out
-    picked, sheet_of = np.concatenate(picked), np.concatenate(sheet_of)
+    picked, group_of = np.concatenate(picked), np.concatenate(group_of)
+    if not len(picked):
+        return out
     centre, normal, r, ok = _face_frames(vertices, radius, result.faces, picked)
     keep = ok & (r > 0)
-    picked, sheet_of, centre, normal, r = (x[keep] for x in (picked, sheet_of, centre, normal, r))
-    hits_sheet, hits_face = [], []
+    picked, group_of, centre, normal, r = (x[keep] for x in (picked, group_of, centre, normal, r))
+    hits_group, hits_face = [], []
     for k, solid in enumerate(solids):
         mine = np.flatnonzero(solid_of[picked] == k)
         if not len(mine):
@@ -72,19 +70,29 @@ def touching_faces(result, face_sheet, n_sheets, solids, per_sheet=64, min_share
             probe = centre[mine] + side * 0.1 * r[mine, None] * normal[mine]
             _, _, face, _ = _core.boundary_distance(solid, probe, 1.5 * r[mine])
             hit = face >= 0
-            hits_sheet.append(sheet_of[mine][hit])
+            hits_group.append(group_of[mine][hit])
             hits_face.append(face[hit].astype(np.int64))
-    if not hits_sheet:
+    if not hits_group or not sum(len(h) for h in hits_group):
         return out
-    hs, hf = np.concatenate(hits_sheet), np.concatenate(hits_face)
-    probes = np.bincount(sheet_of, minlength=n_sheets) * 2
-    key, n = np.unique(hs * (int(hf.max()) + 1) + hf, return_counts=True)
+    hg, hf = np.concatenate(hits_group), np.concatenate(hits_face)
+    probes = np.bincount(group_of, minlength=len(groups)) * 2
+    span = int(hf.max()) + 1
+    key, n = np.unique(hg * span + hf, return_counts=True)
     for k, c in zip(key.tolist(), n.tolist()):
-        s, f = divmod(k, int(hf.max()) + 1)
-        share = c / probes[s]
+        g, f = divmod(k, span)
+        share = c / probes[g]
         if share >= min_share:
-            out[s].append([f, share])
+            out[g].append([f, share])
     for lst in out:
         lst.sort(key=lambda x: (-x[1], x[0]))
     return out
 
+
+def touching_faces(result, face_sheet, n_sheets, solids, per_sheet=64, min_share=0.1):
+    """touching() of each sheet's Voronoi faces (completion triangles lie against an edge)."""
+    usable = (face_sheet >= 0) & (np.asarray(result.face_kind) == 0)
+    order = np.argsort(face_sheet, kind="stable")
+    order = order[usable[order]]
+    bounds = np.searchsorted(face_sheet[order], np.arange(n_sheets + 1))
+    groups = [order[bounds[s]:bounds[s + 1]] for s in range(n_sheets)]
+    return touching(result, groups, solids, per_sheet, min_share)
