@@ -398,3 +398,25 @@ def test_sheets_name_the_two_faces_their_balls_touch():
         assert abs(rod.Faces[disk].CenterOfMass.z - cone["centroid"][2]) < 5
     for rim in s.rims:  # the circular edges, between the side and a disk
         assert sorted(kinds[f] for f, _ in rim["touches"]) == ["Cylinder", "Plane"]
+
+
+def test_thin_plate_keeps_its_corner_triangles():
+    """60 x 40 x 0.5: the exact corner triangles (the sheets of the 4 edges 0.5 long) have area
+    0.5 * 0.5 * 0.25 * sqrt 2 = 0.088, under half a spacing squared; the engine samples the thin
+    plate finer and resolves them, so they are sheets, not slivers (slivers.local_spacing):
+    4 of them, each at its corner, in its bisector plane."""
+    result, s = axis_of(Part.makeBox(60, 40, 0.5))
+    h = s.spacing
+    exact = 0.5 * 0.5 * 0.25 * ROOT2
+    assert exact < 0.5 * h * h
+    small = [d for d in s.sheets if d["area"] < 10 * exact]
+    assert len(small) == 4
+    corners = {(x, y) for x in (0, 60) for y in (0, 40)}
+    for d in small:
+        assert d["area"] == pytest.approx(exact, rel=0.1)
+        x, y, z = d["centroid"]
+        corner = min(corners, key=lambda c: math.hypot(x - c[0], y - c[1]))
+        assert math.hypot(x - corner[0], y - corner[1]) < 0.5 and abs(z - 0.25) < 0.05
+        assert abs(d["normal"][2]) < 0.05  # vertical, as the edge
+        corners.discard(corner)
+    assert not corners

@@ -89,7 +89,8 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
 
     spacing        length unit h of the tolerances; None: result.stats["spacing"] (for a loaded
                    file, the median polygon edge)
-    merge_slivers  True: sheets of less area than sliver_area * h^2 join the real sheet they
+    merge_slivers  True: sheets of less area than sliver_area * h^2 (h the local spacing at thin
+                   walls, see slivers.local_spacing) join the real sheet they
                    touch within reach * h, or form tubes (curves) when a cluster of them spans
                    tube_length * h or more (see slivers.py); False: the raw labels
     rim_radius     a sheet's border edge is a rim when the medial radius at both ends is at most
@@ -112,8 +113,8 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
     area = face_areas(vertices, result.faces) if n_faces else np.zeros(0)
     labels, count = raw_sheets(table, n_faces)
     if merge_slivers and n_faces:
-        sheet, tube, core = resolve_slivers(table, labels, count, area, vertices, result.faces, h,
-                                            sliver_area, reach, tube_length)
+        sheet, tube, core = resolve_slivers(table, labels, count, area, vertices, radius,
+                                            result.faces, h, sliver_area, reach, tube_length)
     else:
         sheet, tube, core = labels, np.full(n_faces, -1, dtype=np.int64), np.ones(n_faces, bool)
     sheet, n_sheets = renumber_by_size(sheet, area)

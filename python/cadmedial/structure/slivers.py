@@ -5,8 +5,13 @@ ragged end of a sheet at a fillet's centre curve, the crossing of a seam, and ab
 the axis (a cylinder's axis) which comes out as a bundle of thousands of sliver faces around the
 line, each a sheet of its own since 3 to 6 of them share every edge. A sheet of less area than a
 couple of spacings squared cannot be told from that noise: measured on the default density, the
-real sheets of a cylinder (its cones) have 2,175 h^2, its axis's slivers at most 1.1 h^2;
-filletBox's sheets at least 828 h^2, its slivers at most 0.2 h^2 (h: the sample spacing).
+real sheets of a cylinder (its cones) have 2,175 h^2, its axis's slivers at most 1.15 h^2;
+filletBox's sheets at least 827 h^2, its slivers at most 0.15 h^2 (h: the sample spacing).
+
+At a thin wall the engine samples finer (adaptive sampling), and real sheets are small: there
+the area is measured in squares of the local spacing (local_spacing()). In h alone, the 4
+corner triangles of a 60 x 40 x 0.5 plate (0.41 h^2 each) and 6 sheets of tail_turbine (0.42
+to 0.78 h^2, each with a rim and two seams) were merged.
 
 A sliver within ``reach`` (one spacing, along a path through touching slivers) of a real sheet is
 part of that sheet's ragged border: it joins the nearest. Of the slivers left, a connected
@@ -48,15 +53,28 @@ def sheet_centres(labels, count, vertices, faces):
                      for k in range(3)], axis=1)
 
 
-def resolve_slivers(table, labels, count, area, vertices, faces, spacing,
+def local_spacing(labels, count, radius, faces, spacing):
+    """(S,) the spacing the engine sampled each sheet's walls with, about: at a wall thinner
+    than the spacing its adaptive sampling spaces samples half the wall's half thickness apart
+    (kSpacingPerRadius in pipeline/compute_medial_axis.cpp), at most 4 times finer than the
+    spacing (kMaxRefinement; deeper only within a sample budget). A sheet's largest radius is
+    its wall's half thickness. On a 60 x 40 x 0.5 plate the 4 exact corner triangles of 0.088
+    (0.41 h^2) are real sheets, sampled about 4 times finer."""
+    _, r_max = grouped_extremes(labels[face_vertex_rows(faces)],
+                                radius[np.asarray(faces.indices)], count)
+    return np.clip(0.5 * r_max, spacing / 4, spacing)
+
+
+def resolve_slivers(table, labels, count, area, vertices, radius, faces, spacing,
                     sliver_area=2.0, reach=1.0, tube_length=3.0):
     """Merges slivers of the raw sheets ``labels`` (F,) (``count`` of them).
 
-    area (F,) face areas; spacing h; sliver_area in h^2, reach and tube_length in h.
+    area (F,) face areas; radius (V,); spacing h; sliver_area in squares of each sheet's local
+    spacing (local_spacing()), reach and tube_length in h.
     Returns (sheet (F,) int64 new sheet label or -1 for a tube face, tube (F,) int64 tube label or
     -1, core (F,) bool: the face was in a real (not sliver) raw sheet)."""
     sheet_area = np.bincount(labels, weights=area, minlength=count)
-    small = sheet_area < sliver_area * spacing ** 2
+    small = sheet_area < sliver_area * local_spacing(labels, count, radius, faces, spacing) ** 2
     core = ~small[labels]
     if not small.any():
         return labels.copy(), np.full(len(labels), -1, dtype=np.int64), core
