@@ -420,3 +420,49 @@ def test_thin_plate_keeps_its_corner_triangles():
         assert abs(d["normal"][2]) < 0.05  # vertical, as the edge
         corners.discard(corner)
     assert not corners
+
+
+def _mesh(vertices, radius, faces, edges=None):
+    from cadmedial import _core
+    from cadmedial.result import MedialAxisResult
+    start = np.r_[0, np.cumsum([len(f) for f in faces])].astype(np.int32)
+    flat = np.array([v for f in faces for v in f], dtype=np.int32)
+    args = [np.asarray(vertices, float), np.asarray(radius, float), start, flat,
+            np.zeros(len(faces), np.uint8), np.zeros(len(faces), np.int32)]
+    if edges is not None:
+        args += [np.asarray(edges, np.int32), np.zeros(len(edges), np.int32)]
+    return MedialAxisResult(_core.MedialMesh(*args), {})
+
+
+def test_three_wings_on_one_edge_are_three_sheets_and_a_seam():
+    """Three unit squares on the segment (0,0,0)-(0,0,1), 120 degrees apart, their far sides on
+    the boundary (radius 0): 3 sheets, 1 seam of length 1 joining all three, ending in two
+    junctions of degree 1; 3 rims (the far sides), each wing's two other sides free borders."""
+    v = [[0, 0, 0], [0, 0, 1]]
+    faces = []
+    for k in range(3):
+        a = 2 * math.pi * k / 3
+        d = [math.cos(a), math.sin(a), 0]
+        v += [[d[0], d[1], 0], [d[0], d[1], 1]]
+        faces.append([0, 1, 3 + 2 * k, 2 + 2 * k])
+    radius = [1, 1] + [0] * 6
+    s = cadmedial.structure(_mesh(v, radius, faces), spacing=0.1)
+    assert s.counts() == {"sheets": 3, "seams": 1, "junctions": 2, "rims": 3, "free": 6,
+                          "curves": 0}
+    seam = s.seams[0]
+    assert seam["length"] == pytest.approx(1) and sorted(seam["sheets"]) == [0, 1, 2]
+    assert sorted(j["seam_degree"] for j in s.junctions) == [1, 1]
+    assert all(r["length"] == pytest.approx(1) for r in s.rims)
+    # Without the third wing the other two are one sheet: no seam, no junction.
+    s = cadmedial.structure(_mesh(v, radius, faces[:2]), spacing=0.1)
+    assert s.counts()["sheets"] == 1 and s.counts()["seams"] == 0
+
+
+def test_a_short_straight_curve_stays_open():
+    """A 1-D polyline 3 spacings long (ends 3 h apart, as close as curves get linked): one open
+    curve of length 3 with a junction at each end, not a loop."""
+    v = [[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]
+    s = cadmedial.structure(_mesh(v, [1] * 4, [], edges=[[0, 1], [1, 2], [2, 3]]), spacing=1.0)
+    assert len(s.curves) == 1 and not s.curves[0]["closed"]
+    assert s.curves[0]["length"] == pytest.approx(3)
+    assert sorted(j["point"][0] for j in s.junctions) == [0, 3]

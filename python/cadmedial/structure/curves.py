@@ -74,7 +74,7 @@ def _tubes_of(c):
 def link_curves(curves, vertices, radius, gap):
     """curves with those whose ends are less than ``gap`` apart joined end to end (a curve that
     comes out partly as 1-D edges and partly as a tube: the torus's core circle), and a curve
-    whose two ends are that close closed. Joined curves get source "edges+tube" (or their common
+    longer than pi * gap whose two ends are that close closed. Joined curves get source "edges+tube" (or their common
     source) and "tubes": the ids of the tubes (key "tube" of a tube's curve) they hold.
 
     Each end links to at most one other, nearest pairs first; then curves and links form paths
@@ -88,8 +88,13 @@ def link_curves(curves, vertices, radius, gap):
     d = np.linalg.norm(points[near[:, 0]] - points[near[:, 1]], axis=1) if len(near) else []
     taken = np.zeros(len(points), dtype=bool)
     links = []
+    length = np.array([curves[i]["length"] for i in open_ids])
     for k in np.argsort(d, kind="stable").tolist():
         a, b = near[k]
+        # A curve closes on itself only if it is longer than a circle of diameter gap: a
+        # straight piece of the axis shorter than gap has its ends that close too.
+        if a // 2 == b // 2 and length[a // 2] <= np.pi * gap:
+            continue
         if not taken[a] and not taken[b]:
             taken[a] = taken[b] = True
             links.append((a, b))
