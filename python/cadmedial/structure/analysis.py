@@ -3,13 +3,14 @@
 import numpy as np
 
 from .borders import group_borders
-from .curves import edge_curves, link_curves, tube_curves
+from .curves import curves_of
 from .edge_kinds import FREE, NAMES, RIM, SEAM, classify_edges
+from .edge_sheets import EdgeSheets
 from .edge_table import edge_table
-from .junctions import seams_and_junctions
-from .sheets import face_areas, face_vertex_rows, raw_sheets, renumber_by_size, sheet_table
+from .junctions import junction_sheets, seams_and_junctions
+from .sheets import face_areas, raw_sheets, renumber_by_size, sheet_table
 from .slivers import resolve_slivers
-from .touching import touching, touching_faces
+from .touching import add_touches
 
 TABLES = ("sheets", "seams", "junctions", "rims", "free", "curves")
 
@@ -107,8 +108,8 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
     vertices = np.asarray(result.vertices, dtype=np.float64)
     radius = np.asarray(result.radius, dtype=np.float64)
     kind = np.asarray(result.face_kind)
-    n_faces, n_vertices = len(result.faces), len(vertices)
-    table = edge_table(result.faces, n_vertices)
+    n_faces = len(result.faces)
+    table = edge_table(result.faces, len(vertices))
     h = _spacing_of(result, spacing, table)
     area = face_areas(vertices, result.faces) if n_faces else np.zeros(0)
     labels, count = raw_sheets(table, n_faces)
@@ -121,94 +122,68 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
     kinds = classify_edges(table, sheet, core, kind, radius, rim_radius * h) if len(table) else \
         np.zeros(0, dtype=np.uint8)
     sheets = sheet_table(sheet, n_sheets, vertices, radius, result.faces, area, kind)
-    raw_per_sheet = np.zeros(n_sheets, dtype=np.int64)
-    if n_faces and n_sheets:
-        pairs = np.unique(np.stack([sheet, labels], axis=1)[sheet >= 0], axis=0)
-        raw_per_sheet = np.bincount(pairs[:, 0], minlength=n_sheets)
-    for s, d in enumerate(sheets):
-        d.update(seams=[], rim_length=0.0, free_length=0.0, slivers=int(raw_per_sheet[s] - 1))
-
-    # (edge, sheet) keys, sorted: the sheets of each edge as CSR slices.
-    edge_of = np.repeat(np.arange(len(table)), table.count)
-    face_sheet_of = sheet[table.faces]
-    keyed = face_sheet_of >= 0
-    edge_sheet_key = np.unique(edge_of[keyed] * (n_sheets + 1) + face_sheet_of[keyed])
-    key_start = np.searchsorted(edge_sheet_key // (n_sheets + 1), np.arange(len(table) + 1))
-
-    def sheets_of_edges(edges):
-        n = key_start[edges + 1] - key_start[edges]
-        at = np.repeat(key_start[edges] - np.cumsum(n) + n, n) + np.arange(n.sum())
-        ids, times = np.unique(edge_sheet_key[at] % (n_sheets + 1), return_counts=True)
-        order = np.lexsort((ids, -times))
-        return ids[order].tolist(), times[order].tolist()
-
-    curves_edges = edge_curves(result)
-    curves_tubes = tube_curves(table, tube, vertices, radius, h)
-    for k, c in enumerate(curves_tubes):
-        c["tube"] = k
-    curves = link_curves(curves_edges + curves_tubes, vertices, radius, tube_length * h)
-    # A tube face's curve: the one its tube went into.
-    tube_to_curve = np.full(len(curves_tubes) + 1, -1, dtype=np.int64)
-    for k, c in enumerate(curves):
-        for t in c.pop("tubes", [c["tube"]] if "tube" in c else []):
-            tube_to_curve[t] = k
-        c.pop("tube", None)
-    face_curve = np.where(tube >= 0, tube_to_curve[tube], -1)
-
-    seam_rows = np.flatnonzero(kinds == SEAM)
-    raw_seams, junctions, junction_of = seams_and_junctions(
-        table.pairs[seam_rows], [c["vertices"] for c in curves if not c["closed"]],
-        vertices, radius, join * h)
-    seams = []
-    for path, edges, closed, length, ends in raw_seams:
-        ids, n = sheets_of_edges(seam_rows[edges])
-        for s in ids:
-            sheets[s]["seams"].append(len(seams))
-        seams.append({"vertices": path, "length": length, "sheets": ids, "sheet_edges": n,
-                      "closed": closed, "ends": ends})
-    # The sheets at each junction: those of the faces at its vertices.
-    rows = face_vertex_rows(result.faces)
-    corner = np.asarray(result.faces.indices, dtype=np.int64)
-    hit = (junction_of[corner] >= 0) & (sheet[rows] >= 0)
-    jkeys = np.unique(junction_of[corner[hit]] * (n_sheets + 1) + sheet[rows[hit]])
-    jstart = np.searchsorted(jkeys // (n_sheets + 1), np.arange(len(junctions) + 1))
-    for j, d in enumerate(junctions):
-        d["sheets"] = (jkeys[jstart[j]:jstart[j + 1]] % (n_sheets + 1)).tolist()
+    _count_slivers(sheets, sheet, labels)
+    on_edge = EdgeSheets(table, sheet, n_sheets)
+    curves, face_curve = curves_of(result, table, tube, vertices, radius, h, tube_length)
+    seams, junctions = _seams(table, kinds, on_edge, sheets, curves, vertices, radius, join * h,
+                              result.faces, sheet)
 
     def borders(wanted, key):
-        rows_w = np.flatnonzero(kinds == wanted)
-        # A border edge has one sheet face: its sheet is the edge's one key.
-        out = group_borders(table.pairs[rows_w], edge_sheet_key[key_start[rows_w]] % (n_sheets + 1),
-                            vertices, radius, join * h)
+        rows = np.flatnonzero(kinds == wanted)
+        out = group_borders(table.pairs[rows], on_edge.first(rows), vertices, radius, join * h)
         for b in out:
             sheets[b["sheet"]][key] += b["length"]
         return out
 
-    rims = borders(RIM, "rim_length")
-    # The input solid of each table row (an assembly's solids share no vertex).
-    vertex_solid = np.full(n_vertices, -1, dtype=np.int64)
-    vertex_solid[np.asarray(result.edges, dtype=np.int64).ravel()] = np.repeat(
-        np.asarray(result.edge_solid, dtype=np.int64), 2)
-    vertex_solid[corner] = np.asarray(result.face_solid, dtype=np.int64)[rows]
-    ids, first = np.unique(sheet[rows], return_index=True)  # each sheet's first corner
-    for k, at in zip(ids.tolist(), first.tolist()):
-        if k >= 0:
-            sheets[k]["solid"] = int(vertex_solid[corner[at]])
-    for d in seams + curves:
-        d["solid"] = int(vertex_solid[d["vertices"][0]])
+    rims, free = borders(RIM, "rim_length"), borders(FREE, "free_length")
+    _tag_solids(result, sheet, sheets, seams + curves)
     if shape is not None:
-        from .. import _core
-        from ..api import read_shape
-        solids = _core.extract_solids(read_shape(shape))
-        for d, touches in zip(sheets, touching_faces(result, sheet, n_sheets, solids)):
-            d["touches"] = touches
-        # A rim's faces: the one face of each of its edges (rows found by their sorted keys).
-        keys = table.pairs[:, 0] * n_vertices + table.pairs[:, 1]
-        groups = [table.first_faces(np.searchsorted(keys, b["edges"][:, 0] * n_vertices
-                                                    + b["edges"][:, 1])) for b in rims]
-        for b, touches in zip(rims, touching(result, groups, solids)):
-            b["touches"] = touches
+        add_touches(result, shape, table, sheet, sheets, rims)
     return AxisStructure(face_sheet=sheet, face_curve=face_curve, edges=table.pairs,
                          edge_kind=kinds, edge_kind_names=dict(NAMES), sheets=sheets, seams=seams,
-                         junctions=junctions, rims=rims,
-                         free=borders(FREE, "free_length"), curves=curves, spacing=h)
+                         junctions=junctions, rims=rims, free=free, curves=curves, spacing=h)
+
+
+def _count_slivers(sheets, sheet, labels):
+    """Sets each sheet's seams [], rim_length, free_length 0 and slivers: the raw sheets merged
+    into it besides its own."""
+    raw = np.zeros(len(sheets), dtype=np.int64)
+    if len(sheets):
+        pairs = np.unique(np.stack([sheet, labels], axis=1)[sheet >= 0], axis=0)
+        raw = np.bincount(pairs[:, 0], minlength=len(sheets))
+    for s, d in enumerate(sheets):
+        d.update(seams=[], rim_length=0.0, free_length=0.0, slivers=int(raw[s] - 1))
+
+
+def _seams(table, kinds, on_edge, sheets, curves, vertices, radius, join, faces, sheet):
+    """(seams, junctions) as AxisStructure lists; each sheet's "seams" filled in."""
+    rows = np.flatnonzero(kinds == SEAM)
+    raw, junctions, junction_of = seams_and_junctions(
+        table.pairs[rows], [c["vertices"] for c in curves if not c["closed"]], vertices, radius,
+        join)
+    seams = []
+    for path, edges, closed, length, ends in raw:
+        ids, n = on_edge.tally(rows[edges])
+        for s in ids:
+            sheets[s]["seams"].append(len(seams))
+        seams.append({"vertices": path, "length": length, "sheets": ids, "sheet_edges": n,
+                      "closed": closed, "ends": ends})
+    for d, ids in zip(junctions, junction_sheets(junction_of, faces, sheet, len(sheets))):
+        d["sheets"] = ids
+    return seams, junctions
+
+
+def _tag_solids(result, sheet, sheets, polylines):
+    """Sets "solid" of each sheet (that of its first face) and of each dict of ``polylines``
+    (that of its first vertex; an assembly's solids share no vertex)."""
+    vertex_solid = np.full(result.num_vertices, -1, dtype=np.int64)
+    vertex_solid[np.asarray(result.edges, dtype=np.int64).ravel()] = np.repeat(
+        np.asarray(result.edge_solid, dtype=np.int64), 2)
+    vertex_solid[np.asarray(result.faces.indices, dtype=np.int64)] = np.repeat(
+        np.asarray(result.face_solid, dtype=np.int64), result.faces.sizes())
+    ids, first = np.unique(sheet, return_index=True)
+    for k, f in zip(ids.tolist(), first.tolist()):
+        if k >= 0:
+            sheets[k]["solid"] = int(np.asarray(result.face_solid)[f])
+    for d in polylines:
+        d["solid"] = int(vertex_solid[d["vertices"][0]])

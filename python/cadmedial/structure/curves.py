@@ -74,8 +74,9 @@ def _tubes_of(c):
 def link_curves(curves, vertices, radius, gap):
     """curves with those whose ends are less than ``gap`` apart joined end to end (a curve that
     comes out partly as 1-D edges and partly as a tube: the torus's core circle), and a curve
-    longer than pi * gap whose two ends are that close closed. Joined curves get source "edges+tube" (or their common
-    source) and "tubes": the ids of the tubes (key "tube" of a tube's curve) they hold.
+    longer than pi * gap whose two ends are that close closed. Joined curves get source
+    "edges+tube" (or their common source) and "tubes": the ids of the tubes (key "tube" of a
+    tube's curve) they hold.
 
     Each end links to at most one other, nearest pairs first; then curves and links form paths
     of end nodes (node 2i and 2i+1 are curve i's ends), chained like any edges. Longest first."""
@@ -150,3 +151,19 @@ def tube_curves(table, tube, vertices, radius, spacing):
         c["faces"] = int(faces_per_tube[k])
         out.append(c)
     return out
+
+
+def curves_of(result, table, tube, vertices, radius, spacing, tube_length):
+    """(curves, face_curve): the 1-D edges' chains and the tubes' lines, linked end to end where
+    less than tube_length spacings apart (link_curves), longest first; face_curve (F,) int64 the
+    curve of each tube face, else -1."""
+    tubes = tube_curves(table, tube, vertices, radius, spacing)
+    for k, c in enumerate(tubes):
+        c["tube"] = k
+    curves = link_curves(edge_curves(result) + tubes, vertices, radius, tube_length * spacing)
+    tube_to_curve = np.full(len(tubes) + 1, -1, dtype=np.int64)
+    for k, c in enumerate(curves):
+        for t in c.pop("tubes", [c["tube"]] if "tube" in c else []):
+            tube_to_curve[t] = k
+        c.pop("tube", None)
+    return curves, np.where(tube >= 0, tube_to_curve[tube], -1)

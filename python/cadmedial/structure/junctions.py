@@ -69,3 +69,15 @@ def seams_and_junctions(seam_pairs, curve_paths, vertices, radius, join):
                           "radius": float(radius[vs].mean()), "seam_degree": int(seam_ends[j]),
                           "curve_ends": int(curve_end[vs].sum())})
     return seams, junctions, junction_of
+
+
+def junction_sheets(junction_of, faces, face_sheet, n_sheets):
+    """For each junction, the sorted ids of the sheets of the faces at its vertices."""
+    rows = np.repeat(np.arange(len(faces), dtype=np.int64), faces.sizes())
+    corner = np.asarray(faces.indices, dtype=np.int64)
+    hit = (junction_of[corner] >= 0) & (face_sheet[rows] >= 0)
+    base = n_sheets + 1
+    keys = np.unique(junction_of[corner[hit]] * base + face_sheet[rows[hit]])
+    count = int(junction_of.max()) + 1 if len(junction_of) else 0
+    start = np.searchsorted(keys // base, np.arange(count + 1))
+    return [(keys[start[j]:start[j + 1]] % base).tolist() for j in range(count)]

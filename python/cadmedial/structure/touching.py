@@ -96,3 +96,20 @@ def touching_faces(result, face_sheet, n_sheets, solids, per_sheet=64, min_share
     bounds = np.searchsorted(face_sheet[order], np.arange(n_sheets + 1))
     groups = [order[bounds[s]:bounds[s + 1]] for s in range(n_sheets)]
     return touching(result, groups, solids, per_sheet, min_share)
+
+
+def add_touches(result, shape, table, face_sheet, sheets, rims):
+    """Sets "touches" of each sheet (touching_faces) and rim (touching() of the one face of each
+    of its edges) from ``shape``, the source the axis was computed from."""
+    from .. import _core
+    from ..api import read_shape
+    solids = _core.extract_solids(read_shape(shape))
+    for d, touches in zip(sheets, touching_faces(result, face_sheet, len(sheets), solids)):
+        d["touches"] = touches
+    # The table's edges are sorted by this key: a rim's rows by binary search.
+    n = np.int64(result.num_vertices)
+    keys = table.pairs[:, 0] * n + table.pairs[:, 1]
+    groups = [table.first_faces(np.searchsorted(keys, b["edges"][:, 0] * n + b["edges"][:, 1]))
+              for b in rims]
+    for b, touches in zip(rims, touching(result, groups, solids)):
+        b["touches"] = touches
