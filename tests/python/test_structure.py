@@ -251,7 +251,7 @@ def test_cylinder_is_its_axis_curve_and_two_cones():
     """Radius 5, height 40: one curve, the segment z = 5 .. 35 of the axis with radius 5, drawn
     by the engine as a bundle of sliver faces (a tube); two cone sheets (area pi * 5 * 5 * sqrt 2
     each) with the circular edges as rims; no seam; the curve's ends are junctions at the cones'
-    apexes."""
+    apexes, each naming its cone."""
     result, s = axis_of(Part.makeCylinder(5, 40))
     h = s.spacing
     assert len(s.curves) == 1 and len(s.sheets) == 2 and len(s.seams) == 0
@@ -272,6 +272,10 @@ def test_cylinder_is_its_axis_curve_and_two_cones():
     assert len(s.rims) == 2 and all(r["closed"] for r in s.rims)
     apexes = sorted(j["point"][2] for j in s.junctions if j["curve_ends"])
     assert apexes == pytest.approx([5, 35], abs=h)
+    # Each end of the axis meets the cone on its side.
+    for j in s.junctions:
+        assert len(j["sheets"]) == 1
+        assert (s.sheets[j["sheets"][0]]["centroid"][2] > 20) == (j["point"][2] > 20)
 
 
 def test_cylinder_without_merging_is_thousands_of_sliver_sheets():
@@ -466,3 +470,32 @@ def test_a_short_straight_curve_stays_open():
     assert len(s.curves) == 1 and not s.curves[0]["closed"]
     assert s.curves[0]["length"] == pytest.approx(3)
     assert sorted(j["point"][0] for j in s.junctions) == [0, 3]
+
+
+def test_tee_of_two_rods_is_three_axis_curves_with_their_end_cones():
+    """A rod R 3 along x (0 .. 60) and one along y from its middle (30, 0 .. 30): the axis has
+    three curves, the arms' axis lines, radius 3, and a cone (area pi * 3 * 3 sqrt 2) at each
+    free end, each met by its arm's curve; the arms meet in a sheet round the T's centre."""
+    a = Part.makeCylinder(3, 60, FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(1, 0, 0))
+    b = Part.makeCylinder(3, 30, FreeCAD.Vector(30, 0, 0), FreeCAD.Vector(0, 1, 0))
+    # At 20,000 samples the spacing (1.85) is over half the radius and the cones' areas are
+    # 15 % off; 50,000 give 0.16.
+    result, s = axis_of(a.fuse(b).removeSplitter(), 50000)
+    h = s.spacing
+    assert len(s.curves) == 3
+    lines = [((0, 0, 0), (60, 0, 0)), ((30, 0, 0), (30, 30, 0))]
+    cones = [k for k, d in enumerate(s.sheets)
+             if d["area"] == pytest.approx(math.pi * 9 * ROOT2, rel=0.05)]
+    apex = {k: np.array(s.sheets[k]["centroid"]) for k in cones}
+    assert len(cones) == 3
+    for c in s.curves:
+        p = result.vertices[c["vertices"]]
+        assert min(segment_distance(p, np.array(u, float), np.array(v, float)).max()
+                   for u, v in lines) < h
+        assert c["radius_max"] == pytest.approx(3, abs=1e-6) and c["radius_min"] > 3 - h
+        ends = [j for j in s.junctions if j["curve_ends"] and
+                min(np.linalg.norm(np.array(j["point"]) - p[[0, -1]], axis=1)) < 1e-9]
+        met = {k for j in ends for k in j["sheets"]} & set(cones)
+        assert len(met) == 1  # its own end cone, the nearest of the three
+        k = met.pop()
+        assert min(np.linalg.norm(p[[0, -1]] - apex[k], axis=1)) < 3 + 2 * h

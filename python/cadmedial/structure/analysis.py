@@ -7,7 +7,7 @@ from .curves import curves_of
 from .edge_kinds import FREE, NAMES, RIM, SEAM, classify_edges
 from .edge_sheets import EdgeSheets
 from .edge_table import edge_table
-from .junctions import junction_sheets, seams_and_junctions
+from .junctions import junction_sheets, seams_and_junctions, sheets_near_curve_ends
 from .sheets import face_areas, raw_sheets, renumber_by_size, sheet_table
 from .slivers import resolve_slivers
 from .touching import add_touches
@@ -33,7 +33,8 @@ class AxisStructure:
                 ends [junction id or -1, junction id or -1], solid
     junctions   list of dicts: vertex, vertices (near-duplicates merged into it), point
                 [x, y, z], radius, seam_degree (seam ends at it: 1 a seam's end, 3 or more where
-                seams meet), curve_ends (curves ending at it), sheets (ids of its faces)
+                seams meet), curve_ends (curves ending at it), sheets (ids of its faces; where
+                a curve ends, also of the sheets within tube_length * h)
     rims, free  lists of dicts (see borders.group_borders): sheet, length, edges, vertices,
                 closed, span, radius_min, radius_max; rims with shape=: touches, the faces
                 beside it (two for a rim along one convex edge: that edge's faces)
@@ -127,6 +128,7 @@ def structure(result, spacing=None, merge_slivers=True, rim_radius=1.0, sliver_a
     curves, face_curve = curves_of(result, table, tube, vertices, radius, h, tube_length)
     seams, junctions = _seams(table, kinds, on_edge, sheets, curves, vertices, radius, join * h,
                               result.faces, sheet)
+    sheets_near_curve_ends(junctions, result.faces, sheet, vertices, tube_length * h)
 
     def borders(wanted, key):
         rows = np.flatnonzero(kinds == wanted)

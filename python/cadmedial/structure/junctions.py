@@ -10,6 +10,7 @@ resolution: its two junctions become one and the seam goes.
 import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
 
 from .chains import chain, polyline_length, vertex_degree
 
@@ -81,3 +82,21 @@ def junction_sheets(junction_of, faces, face_sheet, n_sheets):
     count = int(junction_of.max()) + 1 if len(junction_of) else 0
     start = np.searchsorted(keys // base, np.arange(count + 1))
     return [(keys[start[j]:start[j + 1]] % base).tolist() for j in range(count)]
+
+
+def sheets_near_curve_ends(junctions, faces, face_sheet, vertices, reach):
+    """Adds to the "sheets" of each junction where a curve ends those with a vertex within
+    ``reach`` of it: a tube's line stops short of the sheets it runs into (the cylinder's axis
+    ends about a spacing from its cones' apexes), sharing no vertex with them."""
+    at = [j for j in junctions if j["curve_ends"]]
+    if not at:
+        return
+    rows = np.repeat(np.arange(len(faces), dtype=np.int64), faces.sizes())
+    corner = np.asarray(faces.indices, dtype=np.int64)
+    keep = face_sheet[rows] >= 0
+    if not keep.any():
+        return
+    corner, sheet_of = corner[keep], face_sheet[rows[keep]]
+    tree = cKDTree(vertices[corner])
+    for j, near in zip(at, tree.query_ball_point([j["point"] for j in at], reach)):
+        j["sheets"] = sorted(set(j["sheets"]) | set(sheet_of[near].tolist()))
