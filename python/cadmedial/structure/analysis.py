@@ -151,8 +151,9 @@ def _count_slivers(sheets, sheet, labels):
     into it besides its own."""
     raw = np.zeros(len(sheets), dtype=np.int64)
     if len(sheets):
-        pairs = np.unique(np.stack([sheet, labels], axis=1)[sheet >= 0], axis=0)
-        raw = np.bincount(pairs[:, 0], minlength=len(sheets))
+        used = sheet >= 0
+        pairs = np.unique(sheet[used] * (int(labels.max()) + 1) + labels[used])
+        raw = np.bincount(pairs // (int(labels.max()) + 1), minlength=len(sheets))
     for s, d in enumerate(sheets):
         d.update(seams=[], rim_length=0.0, free_length=0.0, slivers=int(raw[s] - 1))
 
