@@ -84,7 +84,7 @@ class _StructureModule:
     RIM: int
     FREE: int
     TUBE: int
-    AxisStructure: type[AxisStructure]
+    AxisStructure: type[_AxisStructure]
     def __call__(
         self,
         result: MedialAxisResult,
@@ -96,7 +96,7 @@ class _StructureModule:
         tube_length: float = ...,
         join: float = ...,
         shape: Optional[Source] = ...,
-    ) -> AxisStructure: ...
+    ) -> _AxisStructure: ...
     def structure(
         self,
         result: MedialAxisResult,
@@ -108,9 +108,10 @@ class _StructureModule:
         tube_length: float = ...,
         join: float = ...,
         shape: Optional[Source] = ...,
-    ) -> AxisStructure: ...
+    ) -> _AxisStructure: ...
 
-class AxisStructure:
+class _AxisStructure:
+    # cadmedial.structure.AxisStructure (the package is typed here: it loads on first use)
     face_sheet: npt.NDArray[np.int64]
     face_curve: npt.NDArray[np.int64]
     edges: npt.NDArray[np.int64]
