@@ -25,11 +25,13 @@ def group_borders(pairs, edge_sheet, vertices, radius, join):
         return []
     # Nodes: the (sheet, vertex) pairs of the border, linked by its edges and when closer than
     # join (and of one sheet); an edge's group is its first end's component.
-    key = np.stack([np.repeat(edge_sheet, 2), pairs.ravel()], axis=1)
-    nodes, node_of = np.unique(key, axis=0, return_inverse=True)
+    n = np.int64(len(vertices))
+    key = np.repeat(np.asarray(edge_sheet, dtype=np.int64), 2) * n + pairs.ravel()
+    nodes, node_of = np.unique(key, return_inverse=True)
     node_of = node_of.reshape(-1, 2)
-    near = cKDTree(vertices[nodes[:, 1]]).query_pairs(join, output_type="ndarray")
-    near = near[nodes[near[:, 0], 0] == nodes[near[:, 1], 0]]
+    node_sheet, node_vertex = nodes // n, nodes % n
+    near = cKDTree(vertices[node_vertex]).query_pairs(join, output_type="ndarray")
+    near = near[node_sheet[near[:, 0]] == node_sheet[near[:, 1]]]
     a = np.r_[node_of[:, 0], near[:, 0]]
     b = np.r_[node_of[:, 1], near[:, 1]]
     graph = coo_matrix((np.ones(len(a)), (a, b)), shape=(len(nodes), len(nodes)))
