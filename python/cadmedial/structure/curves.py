@@ -3,7 +3,7 @@ line they hug."""
 
 import numpy as np
 from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import dijkstra
+from scipy.sparse.csgraph import breadth_first_order, dijkstra
 from scipy.spatial import cKDTree
 
 from .chains import chain, polyline_length
@@ -36,14 +36,16 @@ def edge_curves(result, stops=None):
 
 def _diameter_path(pairs, vertices, seed):
     """Vertex indices of the shortest path between the two ends of the graph's (approximate)
-    diameter: the farthest vertex u from ``seed``, then the farthest from u (two sweeps)."""
+    diameter: the vertex u farthest from ``seed`` in hops, then the farthest from u in length
+    (two sweeps)."""
     nodes, local = np.unique(pairs, return_inverse=True)
     local = local.reshape(-1, 2)
     w = np.linalg.norm(vertices[pairs[:, 0]] - vertices[pairs[:, 1]], axis=1) + 1e-300
     g = coo_matrix((w, (local[:, 0], local[:, 1])), shape=(len(nodes), len(nodes))).tocsr()
     start = int(np.searchsorted(nodes, seed))
-    d = dijkstra(g, directed=False, indices=start)
-    u = int(np.argmax(np.where(np.isfinite(d), d, -1)))
+    # The first sweep by hops (breadth first, its last vertex is farthest in hops): along a tube
+    # that is about the farthest in length, and a third of the cost of a Dijkstra sweep.
+    u = int(breadth_first_order(g, start, directed=False, return_predecessors=False)[-1])
     d, pred = dijkstra(g, directed=False, indices=u, return_predecessors=True)
     v = int(np.argmax(np.where(np.isfinite(d), d, -1)))
     path = [v]
