@@ -6,6 +6,7 @@ Plain Python over the compiled module ``cadmedial._core``; FreeCAD is not needed
     result = cadmedial.compute("part.step", samples=20000)
     result.vertices, result.radius      # (V, 3) and (V,) numpy arrays
     result.save("part_medial.ply")
+    s = cadmedial.structure(result)     # sheets, seams, junctions, rims, curves (docs/structure.md)
 
 ``cadmedial.app`` (FreeCAD document objects) and ``cadmedial.gui`` (the workbench) build on it.
 """
@@ -39,14 +40,15 @@ __version__ = "0.1.0"
 
 
 def __getattr__(name):
-    # cadmedial.thickness (a callable subpackage) pulls in scipy and FreeCAD's Part: only on use.
-    if name == "thickness":
+    # cadmedial.thickness (a callable subpackage) pulls in scipy and FreeCAD's Part, and
+    # cadmedial.structure (callable too: structure(result)) scipy: only on use.
+    if name in ("thickness", "structure"):
         import importlib
-        return importlib.import_module(__name__ + ".thickness")
+        return importlib.import_module(__name__ + "." + name)
     raise AttributeError("module 'cadmedial' has no attribute %r" % name)
 
 __all__ = [
     "compute", "plan_sampling", "load", "read_shape", "batch",
     "MedialAxisResult", "Faces", "FaceKind", "SamplingPlan",
-    "Error", "InvalidInput", "GeometryError", "Cancelled", "thickness",
+    "Error", "InvalidInput", "GeometryError", "Cancelled", "thickness", "structure",
 ]

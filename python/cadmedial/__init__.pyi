@@ -1,7 +1,7 @@
 # Typed public API of cadmedial (see __init__.py for the docs).
 import enum
 import os
-from typing import Any, Callable, Iterator, NamedTuple, Optional, Tuple, Union
+from typing import Any, Callable, Dict, Iterator, List, NamedTuple, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -76,3 +76,55 @@ def compute(
 def load(path: Union[str, os.PathLike[str]]) -> MedialAxisResult: ...
 
 from . import batch as batch  # a callable module: cadmedial.batch(inputs, out_dir, ...) -> batch.BatchResult
+
+class _StructureModule:
+    # cadmedial.structure: a callable subpackage, loaded on first use.
+    INSIDE: int
+    SEAM: int
+    RIM: int
+    FREE: int
+    TUBE: int
+    AxisStructure: type[_AxisStructure]
+    def __call__(
+        self,
+        result: MedialAxisResult,
+        spacing: Optional[float] = ...,
+        merge_slivers: bool = ...,
+        rim_radius: float = ...,
+        sliver_area: float = ...,
+        reach: float = ...,
+        tube_length: float = ...,
+        join: float = ...,
+        shape: Optional[Source] = ...,
+    ) -> _AxisStructure: ...
+    def structure(
+        self,
+        result: MedialAxisResult,
+        spacing: Optional[float] = ...,
+        merge_slivers: bool = ...,
+        rim_radius: float = ...,
+        sliver_area: float = ...,
+        reach: float = ...,
+        tube_length: float = ...,
+        join: float = ...,
+        shape: Optional[Source] = ...,
+    ) -> _AxisStructure: ...
+
+class _AxisStructure:
+    # cadmedial.structure.AxisStructure (the package is typed here: it loads on first use)
+    face_sheet: npt.NDArray[np.int64]
+    face_curve: npt.NDArray[np.int64]
+    edges: npt.NDArray[np.int64]
+    edge_kind: npt.NDArray[np.uint8]
+    edge_kind_names: Dict[int, str]
+    sheets: List[Dict[str, Any]]
+    seams: List[Dict[str, Any]]
+    junctions: List[Dict[str, Any]]
+    rims: List[Dict[str, Any]]
+    free: List[Dict[str, Any]]
+    curves: List[Dict[str, Any]]
+    spacing: float
+    def to_dict(self) -> Dict[str, Any]: ...
+    def counts(self) -> Dict[str, int]: ...
+
+structure: _StructureModule
