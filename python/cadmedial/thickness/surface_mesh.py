@@ -14,6 +14,9 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
+from .delaunay_flips import flip_until_delaunay
+from .mesh_sides import mesh_sides
+
 
 @dataclass
 class SurfaceMesh:
@@ -55,16 +58,7 @@ class SurfaceMesh:
         return out
 
 
-def _sides(triangles):
-    """(unique sides (S, 2) sorted pairs, (T, 3) side index of each triangle's sides a-b, b-c,
-    c-a)."""
-    raw = np.stack([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]], axis=1)
-    raw = np.sort(raw.reshape(-1, 2), axis=1)
-    # One int64 key per side: np.unique on rows (axis=0) is several times slower.
-    n = np.int64(triangles.max() + 1)
-    keys, inverse = np.unique(raw[:, 0] * n + raw[:, 1], return_inverse=True)
-    sides = np.column_stack([keys // n, keys % n])
-    return sides, inverse.reshape(-1, 3)
+_sides = mesh_sides  # the name convex_edges imports
 
 
 def _split_long_sides(points, triangles, tri_face, max_edge, project):
@@ -134,59 +128,6 @@ def _split_long_sides(points, triangles, tri_face, max_edge, project):
                      np.column_stack([mca, mbc, c]), np.column_stack([mab, mbc, mca])]
         out_face += [f] * 4
     return points, np.vstack(out_tris), np.concatenate(out_face), False
-
-
-def _flip_round(points, triangles, tri_face):
-    """One round of Delaunay edge flips inside faces: a side shared by two triangles of one face
-    whose opposite angles sum to more than pi is replaced by the other diagonal, each triangle in
-    at most one flip per round. Bisection alone turns BRepMesh's long strips on cylinders into
-    slivers; flips between the rounds keep the triangles near equilateral. Returns
-    (triangles, flipped count)."""
-    sides, tri_side = _sides(triangles)
-    flat_side = tri_side.ravel()
-    order = np.argsort(flat_side, kind="stable")
-    count = np.bincount(flat_side, minlength=len(sides))
-    start = np.concatenate([[0], np.cumsum(count)[:-1]])
-    two = np.nonzero(count == 2)[0]
-    k1, k2 = order[start[two]], order[start[two] + 1]     # flat (triangle * 3 + local side)
-    t1, j1, t2, j2 = k1 // 3, k1 % 3, k2 // 3, k2 % 3
-    same = tri_face[t1] == tri_face[t2]
-    t1, j1, t2, j2 = t1[same], j1[same], t2[same], j2[same]
-    a, b = triangles[t1, j1], triangles[t1, (j1 + 1) % 3]
-    c, d = triangles[t1, (j1 + 2) % 3], triangles[t2, (j2 + 2) % 3]
-
-    def angle(at, p, q):
-        u, v = points[p] - points[at], points[q] - points[at]
-        cos = np.einsum("ij,ij->i", u, v) / np.maximum(
-            np.linalg.norm(u, axis=1) * np.linalg.norm(v, axis=1), 1e-300)
-        return np.arccos(np.clip(cos, -1.0, 1.0))
-    excess = angle(c, a, b) + angle(d, a, b) - np.pi
-    cand = np.nonzero((excess > 1e-9) & (c != d))[0]
-    if len(cand) == 0:
-        return triangles, 0
-    n = np.int64(len(points))
-    existing = sides[:, 0] * n + sides[:, 1]
-    new_key = np.minimum(c[cand], d[cand]) * n + np.maximum(c[cand], d[cand])
-    cand = cand[~np.isin(new_key, existing)]
-    prio = excess[cand] + 1e-12 * np.arange(len(cand)) / max(len(cand), 1)
-    best = np.full(len(triangles), -np.inf)
-    np.maximum.at(best, t1[cand], prio)
-    np.maximum.at(best, t2[cand], prio)
-    win = cand[(best[t1[cand]] == prio) & (best[t2[cand]] == prio)]
-    if len(win) == 0:
-        return triangles, 0
-    triangles = triangles.copy()
-    triangles[t1[win]] = np.column_stack([c[win], a[win], d[win]])
-    triangles[t2[win]] = np.column_stack([d[win], b[win], c[win]])
-    return triangles, len(win)
-
-
-def _flip_until_delaunay(points, triangles, tri_face, rounds=12):
-    for _ in range(rounds):
-        triangles, flipped = _flip_round(points, triangles, tri_face)
-        if not flipped:
-            break
-    return triangles
 
 
 def _merge_coincident(points, triangles, tol):
@@ -261,11 +202,11 @@ def surface_mesh(shape, solids, max_edge, deflection):
         return out
 
     done = False
-    triangles = _flip_until_delaunay(points, triangles, tri_face)
+    triangles = flip_until_delaunay(points, triangles, tri_face)
     while not done:
         points, triangles, tri_face, done = _split_long_sides(points, triangles, tri_face,
                                                              max_edge, project)
-        triangles = _flip_until_delaunay(points, triangles, tri_face)
+        triangles = flip_until_delaunay(points, triangles, tri_face)
     a, b, c = (points[triangles[:, i]] for i in range(3))
     good = np.linalg.norm(np.cross(b - a, c - a), axis=1) > 1e-12 * diag * diag
     triangles, tri_face = triangles[good], tri_face[good]
