@@ -16,6 +16,7 @@ from scipy.spatial import cKDTree
 
 from .delaunay_flips import flip_until_delaunay
 from .mesh_sides import mesh_sides
+from .surface_projection import project_on_surface
 
 
 @dataclass
@@ -180,25 +181,10 @@ def surface_mesh(shape, solids, max_edge, deflection):
         out = p.copy()
         for f in np.unique(face_index):
             surface = faces[f].Surface
-            kind = type(surface).__name__
+            if type(surface).__name__ == "Plane":  # a chord's midpoint is on it
+                continue
             sel = np.nonzero(face_index == f)[0]
-            if kind == "Plane":
-                continue
-            if kind in ("Cylinder", "Sphere"):  # closed forms, vectorised
-                c = np.array(tuple(surface.Center))
-                d = p[sel] - c
-                if kind == "Cylinder":
-                    axis = np.array(tuple(surface.Axis))
-                    along = (d @ axis)[:, None] * axis
-                    d = d - along
-                    c = c + along
-                out[sel] = c + surface.Radius * d / np.maximum(
-                    np.linalg.norm(d, axis=1), 1e-300)[:, None]
-                continue
-            for j in sel:
-                u, v = surface.parameter(_vector(p[j]))
-                q = surface.value(u, v)
-                out[j] = (q.x, q.y, q.z)
+            out[sel] = project_on_surface(surface, p[sel])
         return out
 
     done = False
@@ -216,7 +202,3 @@ def surface_mesh(shape, solids, max_edge, deflection):
     names = ["Face%d" % (i + 1) for i in range(len(faces))]
     return SurfaceMesh(points, triangles, tri_face, point_solid, names)
 
-
-def _vector(p):
-    import FreeCAD
-    return FreeCAD.Vector(float(p[0]), float(p[1]), float(p[2]))
