@@ -29,14 +29,22 @@ def _pairs(points, triangles, tri_face, sub):
     """The sides shared by two triangles of ``sub`` (ascending triangle indices) on one face:
     (t1, t2, a, b, c, d, excess), t1 < t2, a-b the side as t1 runs it, c opposite in t1, d in
     t2, excess = the opposite angles' sum - pi."""
+    if len(sub) == 0:
+        empty = np.zeros(0, dtype=np.int64)
+        return empty, empty, empty, empty, empty, empty, np.zeros(0)
     local = triangles[sub]
-    sides, tri_side = mesh_sides(local)
-    flat_side = tri_side.ravel()
-    order = np.argsort(flat_side, kind="stable")
-    count = np.bincount(flat_side, minlength=len(sides))
-    start = np.concatenate([[0], np.cumsum(count)[:-1]])
-    two = np.nonzero(count == 2)[0]
-    k1, k2 = order[start[two]], order[start[two] + 1]     # flat (triangle * 3 + local side)
+    # One sort of the half-sides' keys: a side held by exactly two triangles is a run of two
+    # equal keys (stable: the lower flat index first), in increasing key order.
+    raw = np.stack([local[:, [0, 1]], local[:, [1, 2]], local[:, [2, 0]]], axis=1).reshape(-1, 2)
+    n = np.int64(len(points))
+    keys = np.minimum(raw[:, 0], raw[:, 1]) * n + np.maximum(raw[:, 0], raw[:, 1])
+    order = np.argsort(keys, kind="stable")
+    ks = keys[order]
+    equal = ks[1:] == ks[:-1]
+    before = np.concatenate([[False], equal[:-1]])  # the run started earlier
+    after = np.concatenate([equal[1:], [False]])    # the run goes on past two
+    first = np.nonzero(equal & ~before & ~after)[0]
+    k1, k2 = order[first], order[first + 1]         # flat (triangle * 3 + local side)
     t1, j1, t2, j2 = sub[k1 // 3], k1 % 3, sub[k2 // 3], k2 % 3
     same = tri_face[t1] == tri_face[t2]
     t1, j1, t2, j2 = t1[same], j1[same], t2[same], j2[same]
