@@ -164,7 +164,9 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
         h = box.DiagonalLength / 200.0
     max_edge = 1.5 * h if max_edge is None else _limit("max_edge", max_edge)
     deflection = h / 20.0 if deflection is None else _limit("deflection", deflection)
-    mesh = surface_mesh(shape, solids, max_edge, deflection)
+    # The solids for the engine's exact distance: the surface mesh's projections, the refinement.
+    core_solids = [_core.read_brep_string(solid.exportBrepToString()) for solid in solids]
+    mesh = surface_mesh(shape, solids, max_edge, deflection, exact=core_solids)
     t2 = time.perf_counter()
     timings["surface_mesh"] = t2 - t1
 
@@ -189,8 +191,8 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
         values[pick], gap[pick], ball[pick], start[pick] = v, g, balls[b], top
     # On an edge between two faces the balls touching either face contain the point, and the
     # largest is its thickness (a concave edge): the largest ball in reach, not the weighted mean
-    # (which read 1.87 for 2 at io1-cm-214's concave edges). Inside a face the tangent ball is
-    # one, and the weighted mean reads it (sphere.SIGMA).
+    # (which made io1-cm-214's thinnest counted value 1.87, at an edge point, for 2). Inside a
+    # face the tangent ball is one, and the weighted mean reads it (sphere.SIGMA).
     one_face = _on_one_face(mesh)
     values[~one_face] = start[~one_face]
     t3 = time.perf_counter()
@@ -217,8 +219,7 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
         mine = todo[mesh.point_solid[todo] == s]
         if not len(mine):
             continue
-        core_solid = _core.read_brep_string(solid.exportBrepToString())
-        v, ok = refine_thickness(core_solid, mesh.points[mine], values[mine], max_edge, diag,
+        v, ok = refine_thickness(core_solids[s], mesh.points[mine], values[mine], max_edge, diag,
                                  budget=refine_budget - spent,
                                  edge_normals=lambda i, feet, mine=mine: edge_normals(mine[i], feet),
                                  start=start[mine])

@@ -14,9 +14,10 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
+from .. import _core
 from .delaunay_flips import flip_until_delaunay
 from .mesh_sides import mesh_sides
-from .surface_projection import project_on_surface
+from .surface_projection import CLOSED_FORMS, project_on_surface
 
 
 @dataclass
@@ -146,17 +147,21 @@ def _merge_coincident(points, triangles, tol):
     return points[keep], new_index[label[triangles]]
 
 
-def surface_mesh(shape, solids, max_edge, deflection):
+def surface_mesh(shape, solids, max_edge, deflection, exact=None):
     """SurfaceMesh of ``solids`` (faces of ``shape``): BRepMesh at ``deflection`` (linear), then
-    sides split until none is longer than ``max_edge``. Degenerate triangles are dropped."""
+    sides split until none is longer than ``max_edge``. Degenerate triangles are dropped.
+    ``exact``: the solids as _core shapes (read_brep_string), or None; with them, midpoints on
+    faces with no closed form (B-splines...) are put on the face by the engine's exact distance,
+    all at once, where its nearest point lies on that face (elsewhere, and without them, by
+    OpenCASCADE's projection one point at a time: 0.2 ms each, 3.4 s of dm1-id-214's 4.5 s)."""
     faces = list(shape.Faces)
     index_of = {}
     for i, face in enumerate(faces):
         index_of.setdefault(face.hashCode(), i)
-    chunks, tri_chunks, face_chunks, solid_of_face = [], [], [], {}
+    chunks, tri_chunks, face_chunks, solid_of_face, local_of_face = [], [], [], {}, {}
     offset = 0
     for s, solid in enumerate(solids):
-        for face in solid.Faces:
+        for k, face in enumerate(solid.Faces):
             i = index_of.get(face.hashCode())
             if i is None:  # a solid made from a shell here: its faces are the shell's
                 i = len(faces)
@@ -164,7 +169,7 @@ def surface_mesh(shape, solids, max_edge, deflection):
                 index_of[face.hashCode()] = i
             if i in solid_of_face:
                 continue
-            solid_of_face[i] = s
+            solid_of_face[i], local_of_face[i] = s, k  # k: the face's number in the engine's map
             pts, tris = face.tessellate(deflection)
             if not tris:
                 continue
@@ -179,12 +184,31 @@ def surface_mesh(shape, solids, max_edge, deflection):
 
     def project(p, face_index):
         out = p.copy()
+        others = []  # (face, indices) of surfaces with no closed form
         for f in np.unique(face_index):
             surface = faces[f].Surface
-            if type(surface).__name__ == "Plane":  # a chord's midpoint is on it
+            kind = type(surface).__name__
+            if kind == "Plane":  # a chord's midpoint is on it
                 continue
             sel = np.nonzero(face_index == f)[0]
-            out[sel] = project_on_surface(surface, p[sel])
+            if kind in CLOSED_FORMS or exact is None:
+                out[sel] = project_on_surface(surface, p[sel])
+            else:
+                others.append((f, sel))
+        for s in sorted({solid_of_face[f] for f, _ in others}):
+            mine = [(f, sel) for f, sel in others if solid_of_face[f] == s]
+            at = np.concatenate([sel for _, sel in mine])
+            want = np.concatenate([np.full(len(sel), local_of_face[f]) for f, sel in mine])
+            _, foot, face, _ = _core.boundary_distance(exact[s], p[at],
+                                                       np.full(len(at), max_edge))
+            hit = face == want
+            out[at[hit]] = foot[hit]
+            missed = np.zeros(len(p), bool)
+            missed[at[~hit]] = True
+            for f, sel in mine:
+                rest = sel[missed[sel]]
+                if len(rest):
+                    out[rest] = project_on_surface(faces[f].Surface, p[rest])
         return out
 
     done = False
