@@ -7,7 +7,7 @@ For each part: the analysis (default density, corners="exclude"), then the refer
 --points counted surface points lying inside one face (seeded choice), at the exact B-rep point
 nearest each. Prints per part: p50/p95/max relative error (and, at the same points, of the medial
 reading alone: the analysis again on the same medial axis with refine_budget=0), the analysis's and the medial axis's
-times (and the exact refinement's part of the analysis, with the share of counted points it
+times, wall and CPU (and the exact refinement's part of the analysis, with the share of counted points it
 refined), the reference's time per point and for all the analysis's points (extrapolated), and the
 reference at the analysis's thinnest point.
 """
@@ -119,6 +119,10 @@ def bench_part(name, count, seed=0):
         "medial_s": res.timings["medial_axis"], "analysis_s": res.timings["analysis"],
         "total_over_medial": (res.timings["medial_axis"] + res.timings["analysis"])
         / max(res.timings["medial_axis"], 1e-9),
+        "medial_cpu_s": res.timings.get("medial_axis_cpu"),
+        "analysis_cpu_s": res.timings.get("analysis_cpu"),
+        "total_over_medial_cpu": (res.timings["medial_axis_cpu"] + res.timings["analysis_cpu"])
+        / max(res.timings["medial_axis_cpu"], 1e-9) if "analysis_cpu" in res.timings else None,
         "reference_s_per_point": per_point,
         "reference_s_all_points": per_point * len(res.points),
         "min": res.statistics["min"], "min_at": None if thin is None else res.points[thin].tolist(),
@@ -155,11 +159,12 @@ def main():
             f = lambda x: "  nan" if x is None or not math.isfinite(x) else "%5.2f" % (100 * x)
             print("%-44s pts %6d cmp %3d counted %3.0f%% err%% p50 %s p95 %s max %s "
                   "(medial reading: p50 %s p95 %s max %s) | medial %6.2fs "
-                  "analysis %6.2fs (x%.2f; refine %s, %s) ref %.1fms/pt (%.0fs all) | min %.4g ref %.4g"
+                  "analysis %6.2fs (x%.2f, CPU x%s; refine %s, %s) ref %.1fms/pt (%.0fs all) | min %.4g ref %.4g"
                   % (name, rec["points"], rec["compared"], 100 * rec["counted_share"],
                      f(rec["p50"]), f(rec["p95"]), f(rec["max"]), f(rec["medial_reading_p50"]),
                      f(rec["medial_reading_p95"]), f(rec["medial_reading_max"]), rec["medial_s"],
                      rec["analysis_s"], rec["total_over_medial"],
+                     "-" if rec["total_over_medial_cpu"] is None else "%.2f" % rec["total_over_medial_cpu"],
                      "-" if rec["refine_s"] is None else "%.2fs" % rec["refine_s"],
                      "-" if rec["refined_share"] is None else "%.0f%%" % (100 * rec["refined_share"]),
                      1e3 * rec["reference_s_per_point"], rec["reference_s_all_points"],

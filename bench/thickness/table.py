@@ -14,17 +14,19 @@ def pct(x):
 
 def main(path):
     print("| part | points | counted area | p50 % | p95 % | max % | medial reading p95 % | max % "
-          "| medial s | analysis s | x | refine s | refined | ref ms/pt | ref all s | min | ref at min |")
-    print("|---" * 17 + "|")
+          "| medial s | analysis s | x | x CPU | refine s | refined | ref ms/pt | ref all s | min | ref at min |")
+    print("|---" * 18 + "|")
     for r in json.load(open(path)):
         if "refused" in r:
             print("| %s | refused: %s |" % (r["part"], r["refused"][:90]))
             continue
-        print("| %s | %d | %.0f %% | %s | %s | %s | %s | %s | %.2f | %.2f | %.2f | %.2f | %.0f %% "
+        cpu = r.get("total_over_medial_cpu")
+        print("| %s | %d | %.0f %% | %s | %s | %s | %s | %s | %.2f | %.2f | %.2f | %s | %.2f | %.0f %% "
               "| %.1f | %.0f | %.4g | %.4g |"
               % (r["part"], r["points"], 100 * r["counted_share"], pct(r["p50"]), pct(r["p95"]),
                  pct(r["max"]), pct(r["medial_reading_p95"]), pct(r["medial_reading_max"]),
-                 r["medial_s"], r["analysis_s"], r["total_over_medial"], r["refine_s"],
+                 r["medial_s"], r["analysis_s"], r["total_over_medial"],
+                 "-" if cpu is None else "%.2f" % cpu, r["refine_s"],
                  100 * r["refined_share"], 1e3 * r["reference_s_per_point"],
                  r["reference_s_all_points"], r["min"] or float("nan"), r["min_reference"]))
 

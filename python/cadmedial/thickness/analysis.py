@@ -148,6 +148,7 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
     minimum, maximum = check_settings(min, max, corners)
     timings = {}
     t0 = time.perf_counter()
+    c0 = time.process_time()  # CPU seconds too: wall times on a shared machine say little
     shape, solids = solids_of(source)
     timings["read"] = time.perf_counter() - t0
     if medial is None:
@@ -155,6 +156,7 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
                                                                   "spacing": spacing}
         medial = compute(shape, progress=progress, **kwargs)
     t1 = time.perf_counter()
+    c1 = time.process_time()
     timings["medial_axis"] = t1 - t0 - timings["read"]
     h = float(medial.stats.get("spacing") or 0.0)
     if not h > 0:  # a loaded result has no stats: a spacing from the vertices' spread
@@ -162,11 +164,14 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
         h = box.DiagonalLength / 200.0
     max_edge = 1.5 * h if max_edge is None else _limit("max_edge", max_edge)
     deflection = h / 20.0 if deflection is None else _limit("deflection", deflection)
-    mesh = surface_mesh(shape, solids, max_edge, deflection)
+    # The solids for the engine's exact distance: the surface mesh's projections, the refinement.
+    core_solids = [_core.read_brep_string(solid.exportBrepToString()) for solid in solids]
+    mesh = surface_mesh(shape, solids, max_edge, deflection, exact=core_solids)
     t2 = time.perf_counter()
     timings["surface_mesh"] = t2 - t1
 
     values = np.empty(len(mesh.points))
+    start = np.empty(len(mesh.points))  # the largest ball in reach: where refinement starts
     gap = np.empty(len(mesh.points))
     ball = np.empty(len(mesh.points), dtype=np.int64)
     vsolid = _vertex_solid(medial)
@@ -180,9 +185,16 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
         balls = np.arange(medial.num_vertices) if s is None else np.nonzero(vsolid == s)[0]
         if len(balls) == 0:
             raise _core.GeometryError("the medial axis has no vertices")
+        top = np.empty(int(pick.sum()))
         v, g, b = sphere_thickness(mesh.points[pick], medial.vertices[balls], medial.radius[balls],
-                                   reach=h)
-        values[pick], gap[pick], ball[pick] = v, g, balls[b]
+                                   reach=h, upper=top)
+        values[pick], gap[pick], ball[pick], start[pick] = v, g, balls[b], top
+    # On an edge between two faces the balls touching either face contain the point, and the
+    # largest is its thickness (a concave edge): the largest ball in reach, not the weighted mean
+    # (which made io1-cm-214's thinnest counted value 1.87, at an edge point, for 2). Inside a
+    # face the tangent ball is one, and the weighted mean reads it (sphere.SIGMA).
+    one_face = _on_one_face(mesh)
+    values[~one_face] = start[~one_face]
     t3 = time.perf_counter()
     timings["sphere"] = t3 - t2
 
@@ -195,7 +207,7 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
     # Outside the corner band only (inside it the edge's bound rules), thinnest first, and on
     # one face only: at a point on an edge between faces (even a convex one turning by less than
     # the band's 10 degrees) no ball is tangent, and the exact value would be about 0 there.
-    todo = np.nonzero((dist >= band) & _on_one_face(mesh))[0]
+    todo = np.nonzero((dist >= band) & one_face)[0]
     todo = todo[np.argsort(values[todo], kind="stable")]
     diag = shape.BoundBox.DiagonalLength
     t_refine = time.perf_counter()
@@ -207,10 +219,10 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
         mine = todo[mesh.point_solid[todo] == s]
         if not len(mine):
             continue
-        core_solid = _core.read_brep_string(solid.exportBrepToString())
-        v, ok = refine_thickness(core_solid, mesh.points[mine], values[mine], max_edge, diag,
+        v, ok = refine_thickness(core_solids[s], mesh.points[mine], values[mine], max_edge, diag,
                                  budget=refine_budget - spent,
-                                 edge_normals=lambda i, feet, mine=mine: edge_normals(mine[i], feet))
+                                 edge_normals=lambda i, feet, mine=mine: edge_normals(mine[i], feet),
+                                 start=start[mine])
         values[mine], refined[mine] = v, ok
     t4 = time.perf_counter()
     timings["refine"] = t4 - t_refine
@@ -227,6 +239,8 @@ def thickness(source, min=None, max=None, corners="exclude", samples=None, spaci
     timings["corners_regions"] = (t_refine - t3) + (t5 - t4)
     timings["analysis"] = t5 - t1
     timings["total"] = t5 - t0
+    timings["medial_axis_cpu"] = c1 - c0  # (with the read)
+    timings["analysis_cpu"] = time.process_time() - c1
     settings = {"min": minimum, "max": maximum, "corners": corners, "spacing": h,
                 "band": band, "max_edge": max_edge, "deflection": deflection,
                 "contain_tol": 0.01, "solids": len(solids), "refine_budget": refine_budget,

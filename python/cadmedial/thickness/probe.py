@@ -50,7 +50,9 @@ def probe(source, point, medial, face=None, reach=0.0):
                  solids[0])
     centres, radii = np.asarray(medial.vertices), np.asarray(medial.radius)
     near = least_power_balls(q, centres, radii)
-    value, _, ball = sphere_thickness(q[None, :], centres[near], radii[near], reach=reach)
+    top = np.empty(1)  # the largest ball in reach: the shrinking ball's start, as in the analysis
+    value, _, ball = sphere_thickness(q[None, :], centres[near], radii[near], reach=reach,
+                                      upper=top)
     ball = near[ball]
     ball_centre = np.asarray(medial.vertices[ball[0]], dtype=np.float64)
     ball_radius = float(medial.radius[ball[0]])
@@ -58,9 +60,9 @@ def probe(source, point, medial, face=None, reach=0.0):
     # The exact largest ball tangent at q (refine.py's shrinking ball), as the analysis reads it;
     # where it cannot be confirmed the medial reading stands.
     exact = False
-    if np.isfinite(medial_value) and medial_value > 0:
+    if np.isfinite(top[0]) and top[0] > 0:
         core = _core.read_brep_string(solid.exportBrepToString())
-        r, ok = _shrink(core, q[None, :], normal[None, :], np.array([START * medial_value / 2.0]),
+        r, ok = _shrink(core, q[None, :], normal[None, :], np.array([START * top[0] / 2.0]),
                         shape.BoundBox.DiagonalLength)
         if ok[0]:
             exact = True

@@ -84,7 +84,7 @@ def _shrink(solid, p, n, r, diag):
 
 
 def refine_thickness(solid, points, values, reach, diag, budget=np.inf, order=None,
-                     edge_normals=None):
+                     edge_normals=None, start=None):
     """(values (N,), refined (N,) bool): the exact sphere thickness 2 r at each surface point
     (N, 3) of ``solid`` (a _core.Shape solid), starting from the medial reading ``values``
     (N,), within ``budget`` seconds. reach bounds how far a point lies from the B-rep (the
@@ -92,9 +92,11 @@ def refine_thickness(solid, points, values, reach, diag, budget=np.inf, order=No
     by default), chunk by chunk until the budget is spent; the others keep their reading.
     edge_normals(indices, feet) -> (normals (M, 3), ok (M,)): for points whose nearest boundary
     point lies on a B-rep edge, the outward normal where one face holds both sides (a seam, a
-    tangent edge); None: such points keep their reading."""
+    tangent edge); None: such points keep their reading. start (N,): the thickness to shrink
+    from (sphere_thickness's upper reading), values by default."""
     points = np.asarray(points, dtype=np.float64)
     out = np.array(values, dtype=np.float64)
+    start = out if start is None else np.asarray(start, dtype=np.float64)
     refined = np.zeros(len(points), bool)
     order = np.arange(len(points)) if order is None else np.asarray(order)
     t0 = time.perf_counter()
@@ -102,7 +104,7 @@ def refine_thickness(solid, points, values, reach, diag, budget=np.inf, order=No
         if time.perf_counter() - t0 > budget:
             break
         idx = order[lo:lo + CHUNK]
-        idx = idx[np.isfinite(out[idx]) & (out[idx] > 0)]
+        idx = idx[np.isfinite(start[idx]) & (start[idx] > 0)]
         if not len(idx):
             continue
         foot, normal, on_face = _foot(solid, points[idx], reach)
@@ -112,7 +114,7 @@ def refine_thickness(solid, points, values, reach, diag, budget=np.inf, order=No
             normal[off[ok_edge]] = n_edge[ok_edge]
             on_face[off[ok_edge]] = True
         idx, foot, normal = idx[on_face], foot[on_face], normal[on_face]
-        r, ok = _shrink(solid, foot, normal, START * out[idx] / 2.0, diag)
+        r, ok = _shrink(solid, foot, normal, START * start[idx] / 2.0, diag)
         out[idx[ok]] = 2.0 * r[ok]
         refined[idx[ok]] = True
     return out, refined
