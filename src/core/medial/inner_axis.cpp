@@ -782,18 +782,14 @@ std::vector<std::uint8_t> label_inside(MedialComplex& mc, const Samples& samples
   return label;
 }
 
-// Keeps faces whose Voronoi vertices are all inside, repairs the topology, then keeps the
-// largest connected piece (the inner medial axis of a connected solid is connected, homotopy
-// equivalent to the solid) and any other piece that reaches the boundary.
 // Per piece root: 1 where every corner of the piece lies in the zone of a sharp convex edge
 // (kSharpWedgeDot) where its two faces are closer than about two spacings, h / sin(angle / 2)
 // from the edge. There the Voronoi diagram of the two faces' samples breaks into fragments that
 // are no sheet of the axis (a random polytope's 15.8-degree wedge: a second piece of 66 Voronoi
 // faces, refined 31k -> 64k samples though the axis was right).
-std::vector<char> pieces_at_sharp_wedges(const MedialComplex& mc, const Samples& samples,
-                                         const std::vector<int>& root,
-                                         const std::function<std::pair<const int*, const int*>(size_t)>& corners_of,
-                                         const std::vector<char>& candidate) {
+static std::vector<char> pieces_at_sharp_wedges(
+    const MedialComplex& mc, const Samples& samples, const std::vector<int>& root,
+    const std::function<std::pair<const int*, const int*>(size_t)>& corners_of, const std::vector<char>& candidate) {
   std::vector<char> at(root.size(), 0);
   std::vector<double> reach(samples.size(), 0.0);
   double max_reach = 0.0;
@@ -833,6 +829,9 @@ std::vector<char> pieces_at_sharp_wedges(const MedialComplex& mc, const Samples&
   return at;
 }
 
+// Keeps faces whose Voronoi vertices are all inside, repairs the topology, then keeps the
+// largest connected piece (the inner medial axis of a connected solid is connected, homotopy
+// equivalent to the solid) and any other piece that reaches the boundary.
 MedialMesh extract_inner(MedialComplex& mc, const std::vector<std::uint8_t>& inside, const Samples& samples,
                          int solid_index, MedialAxisStats& st, const Progress& progress) {
   // Half the faces on each core.
