@@ -796,8 +796,7 @@ static std::vector<char> pieces_at_sharp_wedges(
   std::vector<int> sharp;
   for (size_t i = 0; i < samples.size(); ++i) {
     if (samples.edge_convex[i] != 1) continue;
-    const Point3 &a = samples.normal[i], &b = samples.normal2[i];
-    const double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    const double d = samples.normals_dot(i);
     if (d >= kSharpWedgeDot) continue;
     // The wedge's angle is pi - acos(d); sin of half of it is sqrt((1 + d) / 2).
     reach[i] = samples.spacing / std::sqrt(std::max((1.0 + d) / 2.0, 1e-6));

@@ -227,8 +227,7 @@ SharpestWedge sharpest_wedge(const Samples& samples) {
   SharpestWedge w;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     if (samples.edge_convex[i] != 1) continue;
-    const Point3 &a = samples.normal[i], &b = samples.normal2[i];
-    const double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    const double d = samples.normals_dot(i);
     if (d < w.dot) w.dot = d, w.at = samples.points[i];
   }
   return w;

@@ -19,8 +19,7 @@ EdgeReach convex_edge_reach(const Samples& samples, const SpacingField& field, c
   std::vector<int> sharp;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     if (samples.edge_convex[i] != 1 || samples.edge[i] < 0) continue;
-    const Point3 &a = samples.normal[i], &b = samples.normal2[i];
-    if (a[0] * b[0] + a[1] * b[1] + a[2] * b[2] > turn_cos) continue;
+    if (samples.normals_dot(i) > turn_cos) continue;
     sharp.push_back(static_cast<int>(i));
   }
   if (sharp.empty()) return out;

@@ -54,6 +54,12 @@ struct Samples {
   double spacing = 0.0;
 
   std::size_t size() const { return points.size(); }
+  /// On an Edge/Ball sample: the dot product of its two faces' outward normals (1 where they do
+  /// not turn; below kSharpWedgeDot at a sharp wedge).
+  double normals_dot(std::size_t i) const {
+    const Point3 &a = normal[i], &b = normal2[i];
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  }
 };
 
 }  // namespace cadmedial
