@@ -1,0 +1,67 @@
+// A medial mesh as a mutable 2-complex of triangles (each polygon fanned) and bare edges, with
+// the one operation a simplifier needs: contracting a side into one of its ends (half-edge
+// collapse) where that keeps the complex's homotopy type and the kind of every side.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "../types.h"
+
+namespace cadmedial::compact {
+
+class TriangleComplex {
+ public:
+  /// Fans every polygon from its first vertex; triangles with a repeated vertex are left out.
+  explicit TriangleComplex(const MedialMesh& mesh);
+
+  int num_vertices() const { return static_cast<int>(at_.size()); }
+  int num_triangles() const { return static_cast<int>(tri_.size()); }
+  const std::array<int, 3>& triangle(int t) const { return tri_[static_cast<std::size_t>(t)]; }
+  bool alive(int t) const { return alive_[static_cast<std::size_t>(t)]; }
+  /// The live triangles at vertex v.
+  const std::vector<int>& triangles_at(int v) const { return at_[static_cast<std::size_t>(v)]; }
+  /// The vertices joined to v by a bare edge (no triangle carries it).
+  const std::vector<int>& bare_at(int v) const { return bare_[static_cast<std::size_t>(v)]; }
+
+  /// The vertices sharing a triangle or a bare edge with v, each once, in no fixed order.
+  void neighbours(int v, std::vector<int>& out) const;
+  /// How many live triangles hold side uv: 2 inside a sheet, 1 at a border, 3 or more at a seam.
+  int side_count(int u, int v) const;
+  /// Whether the link of v (the sides opposite v in its triangles) is connected: else v pinches
+  /// sheets that meet only there, and it must stay.
+  bool link_connected(int v) const;
+
+  /// Whether contracting u into v (u's triangles take v, those holding side uv vanish) keeps the
+  /// homotopy type (link condition: the vertices next to both u and v are those of the triangles
+  /// on uv, and no side is opposite both) and the kind of every side at v (a side of two triangles
+  /// stays one, a border or seam side keeps its count). u must have no bare edge.
+  bool can_contract(int u, int v) const;
+  /// Contracts u into v (can_contract must hold). `vanished` gets the triangles that held uv,
+  /// `moved` those of u that now hold v.
+  void contract(int u, int v, std::vector<int>& vanished, std::vector<int>& moved);
+  /// Removes u, a vertex with no triangle and bare edges to exactly a and b, joining a to b.
+  void bypass_bare(int u);
+
+  /// The live triangles and bare edges over the vertices they use (renumbered, in their order),
+  /// with the radii and each triangle's kind and solid from `original`.
+  MedialMesh to_mesh(const MedialMesh& original) const;
+
+ private:
+  void unlink(int t, int v);
+
+  std::vector<std::array<int, 3>> tri_;
+  std::vector<char> alive_;
+  std::vector<int> face_of_;  ///< the polygon of `original` a triangle comes from
+  std::vector<std::vector<int>> at_, bare_;
+  std::vector<int> bare_solid_;  ///< per vertex with bare edges: the solid of its first edge
+};
+
+/// V - E + F and the number of connected pieces (triangles and bare edges) of a complex's live part.
+struct ComplexTopology {
+  long euler = 0;
+  std::size_t components = 0;
+};
+ComplexTopology topology_of(const TriangleComplex& complex);
+
+}  // namespace cadmedial::compact
