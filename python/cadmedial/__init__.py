@@ -7,6 +7,7 @@ Plain Python over the compiled module ``cadmedial._core``; FreeCAD is not needed
     result.vertices, result.radius      # (V, 3) and (V,) numpy arrays
     result.save("part_medial.ply")
     s = cadmedial.structure(result)     # sheets, seams, junctions, rims, curves (docs/structure.md)
+    small = cadmedial.simplify(result, "0.5%")   # the compact mesh (docs/compact.md)
 
 ``cadmedial.app`` (FreeCAD document objects) and ``cadmedial.gui`` (the workbench) build on it.
 """
@@ -34,6 +35,7 @@ _find_core()
 from ._core import Cancelled, Error, GeometryError, InvalidInput  # noqa: E402
 from .api import SamplingPlan, compute, load, plan_sampling, read_shape  # noqa: E402
 from .result import FaceKind, Faces, MedialAxisResult  # noqa: E402
+from .compact import simplify  # noqa: E402
 from . import batch  # noqa: E402  (callable: cadmedial.batch(inputs, out_dir, ...); Dask loads on use)
 
 __version__ = "0.1.0"
@@ -48,7 +50,7 @@ def __getattr__(name):
     raise AttributeError("module 'cadmedial' has no attribute %r" % name)
 
 __all__ = [
-    "compute", "plan_sampling", "load", "read_shape", "batch",
+    "compute", "plan_sampling", "load", "read_shape", "batch", "simplify",
     "MedialAxisResult", "Faces", "FaceKind", "SamplingPlan",
     "Error", "InvalidInput", "GeometryError", "Cancelled", "thickness", "structure",
 ]

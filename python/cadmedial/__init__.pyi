@@ -72,7 +72,10 @@ def compute(
     plain_medial: bool = ...,
     adapt: bool = ...,
     refine: Optional[bool] = ...,
+    min_feature: Optional[float] = ...,
+    simplify: Union[None, float, str] = ...,
 ) -> MedialAxisResult: ...
+def simplify(result: MedialAxisResult, tolerance: Union[float, str]) -> MedialAxisResult: ...
 def load(path: Union[str, os.PathLike[str]]) -> MedialAxisResult: ...
 
 from . import batch as batch  # a callable module: cadmedial.batch(inputs, out_dir, ...) -> batch.BatchResult

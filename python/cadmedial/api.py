@@ -110,7 +110,7 @@ def refines_by_default(spacing, samples):
 
 
 def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=None,
-            plain_medial=False, adapt=True, refine=None, min_feature=None):
+            plain_medial=False, adapt=True, refine=None, min_feature=None, simplify=None):
     """The inner medial axis of every solid of ``source``.
 
     source    a STEP/IGES/BREP file path, BREP text, a FreeCAD Part.Shape or a _core.Shape
@@ -139,6 +139,10 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
               sampled finer than it needs ("ignore features below 0.01 mm"); a warning names the
               thinnest of them and where it is. Like the program's --min-feature.
 
+    simplify  None (default) or a tolerance (model units, or "P%" of the bounding-box diagonal):
+              returns the compact mesh of cadmedial.simplify(result, simplify) (docs/compact.md).
+              Like the program's --simplify.
+
     Returns a MedialAxisResult. Raises InvalidInput (bad file, shape or parameter; also a
     ValueError), GeometryError (a stage failed; also a RuntimeError) or Cancelled.
     """
@@ -150,7 +154,11 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
     mesh, stats = _core.compute_medial_axis(shape, spacing, samples, _number("theta", theta),
                                             _number("rho", rho), progress, plain_medial, adapt,
                                             refine, min_feature=_min_feature(min_feature))
-    return MedialAxisResult(mesh, json.loads(stats))
+    result = MedialAxisResult(mesh, json.loads(stats))
+    if simplify is None:
+        return result
+    from .compact import simplify as _simplify
+    return _simplify(result, simplify)
 
 
 def load(path):

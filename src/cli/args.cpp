@@ -14,7 +14,8 @@ std::string usage() {
   return
       "usage:\n"
       "  cadmedial compute INPUT -o OUTPUT [--spacing S | --samples N] [--refine] [--min-feature F]\n"
-      "                    [--theta DEG] [--rho R] [--stats FILE.json] [--quiet]\n"
+      "                    [--simplify TOL | --simplify P%] [--theta DEG] [--rho R] [--stats FILE.json]\n"
+      "                    [--quiet]\n"
       "  cadmedial info INPUT [--spacing S | --samples N]\n"
       "  cadmedial batch INPUTS... -o OUTDIR [--jobs N] [--scheduler ADDRESS] [--timeout S]\n"
       "                  [--memory GB] [--force] [compute options]   (see cadmedial batch --help)\n"
@@ -36,6 +37,9 @@ std::string usage() {
       "                   neither --spacing nor --samples is given\n"
       "  --min-feature F  walls thinner than F (model units) are not sampled finer than F needs;\n"
       "                   a warning names the thinnest of them and where it is\n"
+      "  --simplify TOL   write the compact mesh: the axis simplified so that every ball of the full\n"
+      "                   axis stays within TOL (model units; 0.1% = a share of the bounding-box\n"
+      "                   diagonal) of it, with the same topology, borders and seams (triangles)\n"
       "  --theta DEG      Angle condition threshold in degrees, in (0, 90) (default 5)\n"
       "  --rho R          Ratio condition threshold, > 0 (default 8)\n"
       "  --stats F        also write run statistics as JSON\n"
@@ -123,6 +127,14 @@ Args parse_args(const std::vector<std::string>& argv) {
       samples_set = true;
     } else if (arg == "--min-feature") {
       args.params.sampling.min_feature = positive(arg, take_value());
+    } else if (arg == "--simplify") {
+      std::string text = take_value();
+      const bool percent = !text.empty() && text.back() == '%';
+      if (percent) text.pop_back();
+      const double tol = positive(arg, text);
+      if (percent && !(tol < 100)) throw InvalidInput(arg + " must be below 100%, got " + text + "%");
+      args.params.compact.tolerance = percent ? tol / 100.0 : tol;
+      args.params.compact.relative = percent;
     } else if (arg == "--theta") {
       const std::string text = take_value();
       const double theta = parse_number(arg, text);

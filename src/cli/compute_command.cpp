@@ -56,6 +56,9 @@ int run_compute(const Args& args) {
             << (result.mesh.num_edges() == 1 ? " edge" : " edges");
   else
     summary << " and " << result.mesh.num_faces() << " faces";
+  if (const auto& c = result.stats.simplify)
+    summary << " (compact: from " << c->vertices_before << " vertices and " << c->faces_before
+            << " faces, every ball within " << c->max_error << " of it, tolerance " << c->tolerance << ")";
   summary << " in " << seconds << " s; wrote " << args.output;
   if (!args.stats.empty()) summary << " and " << args.stats;
   summary << ".\n";

@@ -82,9 +82,16 @@ struct MedialParams {
   bool plain_medial = false;
 };
 
+/// The compact mesh (compact/simplify_axis.h): the axis simplified within a tolerance.
+struct CompactParams {
+  double tolerance = 0.0;  ///< 0 keeps the full Voronoi axis; model units, or a share of the diagonal
+  bool relative = false;   ///< tolerance is a share of the solids' bounding-box diagonal (0.001 = 0.1 %)
+};
+
 struct ComputeParams {
   SamplingParams sampling;
   MedialParams medial;
+  CompactParams compact;
 };
 
 /// Seconds per named stage, in the order they ran.

@@ -192,7 +192,7 @@ class Simplifier {
 
   Role role(int u) const {
     Role r;
-    if (c_.triangles_at(u).empty() || !c_.bare_at(u).empty()) return r;
+    if (c_.triangles_at(u).empty() || !c_.bare_at(u).empty() || c_.pinned(u)) return r;
     std::vector<int> nb;
     c_.neighbours(u, nb);
     int features = 0, count = -1;
@@ -306,11 +306,13 @@ class Simplifier {
       auto tr = c_.triangle(t);
       for (int& x : tr)
         if (x == u) x = v;
+      // Steps of at most half a median side of the full mesh (its corners are its own vertices).
       const int n = std::clamp(static_cast<int>(std::ceil(2 * full_.longest_side(tr) / full_.cell())), 2, 16);
       bool near = true;
       full_.for_lattice(tr, n, [&](const Point3& q) {
-        if (!near) return;
-        near = full_.near(interpolated(tr, q), tol_);
+        if (near && q != mesh_.vertices[static_cast<std::size_t>(tr[0])] &&
+            q != mesh_.vertices[static_cast<std::size_t>(tr[1])] && q != mesh_.vertices[static_cast<std::size_t>(tr[2])])
+          near = full_.near(interpolated(tr, q), tol_);
       });
       if (!near) return false;
     }
@@ -385,10 +387,16 @@ class Simplifier {
 MedialMesh simplify_axis(const MedialMesh& mesh, double tolerance, SimplifyStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   if (!(tolerance >= 0) || !std::isfinite(tolerance)) tolerance = 0;
-  Simplifier s(mesh, tolerance);
+  // Pinned: a vertex added at a polygon's centre is not the full axis's, and stays where it is
+  // (its polygon is folded onto others: it is rare, and its faces are best left as they are).
+  std::vector<char> added;
+  const MedialMesh work = compact::triangulated(mesh, added);
+  Simplifier s(work, tolerance);
+  for (std::size_t v = 0; v < added.size(); ++v)
+    if (added[v]) s.complex().pin(static_cast<int>(v));
   const compact::ComplexTopology before = compact::topology_of(s.complex());
   s.run();
-  MedialMesh out = s.complex().to_mesh(mesh);
+  MedialMesh out = s.complex().to_mesh(work);
   if (stats) {
     const compact::ComplexTopology after = compact::topology_of(s.complex());
     stats->tolerance = tolerance;

@@ -1,7 +1,9 @@
 #include "triangle_complex.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
+#include <unordered_set>
 
 namespace cadmedial::compact {
 
@@ -25,10 +27,60 @@ int root(std::vector<int>& parent, int a) {
 
 }  // namespace
 
+MedialMesh triangulated(const MedialMesh& mesh, std::vector<char>& added) {
+  const auto key = [](int a, int b) {
+    if (a > b) std::swap(a, b);
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  };
+  std::unordered_set<std::uint64_t> sides;
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    const int* c = mesh.face(f);
+    const int n = mesh.face_size(f);
+    for (int k = 0; k < n; ++k) sides.insert(key(c[k], c[(k + 1) % n]));
+  }
+  MedialMesh out;
+  out.vertices = mesh.vertices;
+  out.radius = mesh.radius;
+  out.edges = mesh.edges;
+  out.edge_solid = mesh.edge_solid;
+  added.assign(mesh.num_vertices(), 0);
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    const int* c = mesh.face(f);
+    const int n = mesh.face_size(f);
+    const FaceKind kind = mesh.kind[f];
+    const int solid = mesh.solid[f];
+    int apex = n <= 3 ? 0 : -1;
+    for (int s = 0; s < n && apex < 0; ++s) {
+      bool clean = true;
+      for (int j = 2; j <= n - 2 && clean; ++j) clean = !sides.count(key(c[s], c[(s + j) % n]));
+      if (clean) apex = s;
+    }
+    if (apex >= 0) {
+      for (int j = 2; j <= n - 2; ++j) sides.insert(key(c[apex], c[(apex + j) % n]));
+      for (int j = 1; j + 1 < n; ++j) out.add_face({c[apex], c[(apex + j) % n], c[(apex + j + 1) % n]}, kind, solid);
+      continue;
+    }
+    Point3 centre{0, 0, 0};
+    double r = 0;
+    for (int k = 0; k < n; ++k) {
+      for (int a = 0; a < 3; ++a) centre[a] += mesh.vertices[static_cast<std::size_t>(c[k])][a] / n;
+      r += mesh.radius[static_cast<std::size_t>(c[k])] / n;
+    }
+    const int m = static_cast<int>(out.vertices.size());
+    out.vertices.push_back(centre);
+    out.radius.push_back(r);
+    added.push_back(1);
+    for (int k = 0; k < n; ++k) out.add_face({m, c[k], c[(k + 1) % n]}, kind, solid);
+  }
+  return out;
+}
+
 TriangleComplex::TriangleComplex(const MedialMesh& mesh) : at_(mesh.num_vertices()), bare_(mesh.num_vertices()) {
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const int* c = mesh.face(f);
-    for (int k = 1; k + 1 < mesh.face_size(f); ++k) {
+    if (mesh.face_size(f) != 3) continue;
+    {
+      const int k = 1;
       const std::array<int, 3> t{c[0], c[k], c[k + 1]};
       if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
       const int id = static_cast<int>(tri_.size());
@@ -38,6 +90,13 @@ TriangleComplex::TriangleComplex(const MedialMesh& mesh) : at_(mesh.num_vertices
       for (int v : t) at_[static_cast<std::size_t>(v)].push_back(id);
     }
   }
+  pinned_.assign(mesh.num_vertices(), 0);
+  std::vector<std::array<int, 3>> sorted(tri_);
+  for (auto& t : sorted) std::sort(t.begin(), t.end());
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t k = 1; k < sorted.size(); ++k)
+    if (sorted[k] == sorted[k - 1])
+      for (int v : sorted[k]) pinned_[static_cast<std::size_t>(v)] = 1;
   bare_solid_.assign(mesh.num_vertices(), 0);
   for (std::size_t e = 0; e < mesh.num_edges(); ++e) {
     const auto [a, b] = mesh.edges[e];

@@ -10,9 +10,17 @@
 
 namespace cadmedial::compact {
 
+/// The polygons of `mesh` as triangles with the same topology: each fanned from the first of its
+/// vertices whose fan adds no side that another polygon (or fan) has, else (rare: a polygon
+/// folded onto others) from a vertex added at its centre, with the mean radius; `added` gets
+/// one flag per vertex of the result, set for those. Each triangle keeps its polygon's kind
+/// and solid; the 1-D edges stay.
+MedialMesh triangulated(const MedialMesh& mesh, std::vector<char>& added);
+
 class TriangleComplex {
  public:
-  /// Fans every polygon from its first vertex; triangles with a repeated vertex are left out.
+  /// The triangles of `mesh` (faces of other sizes are left out, as are triangles with a
+  /// repeated vertex) and its 1-D edges.
   explicit TriangleComplex(const MedialMesh& mesh);
 
   int num_vertices() const { return static_cast<int>(at_.size()); }
@@ -21,6 +29,11 @@ class TriangleComplex {
   bool alive(int t) const { return alive_[static_cast<std::size_t>(t)]; }
   /// The live triangles at vertex v.
   const std::vector<int>& triangles_at(int v) const { return at_[static_cast<std::size_t>(v)]; }
+  /// Whether v is a vertex of two triangles with the same three vertices (two polygons of the
+  /// input over them): the complex is not simplicial there and the link condition does not hold
+  /// its topology, so v stays.
+  bool pinned(int v) const { return pinned_[static_cast<std::size_t>(v)] != 0; }
+  void pin(int v) { pinned_[static_cast<std::size_t>(v)] = 1; }
   /// The vertices joined to v by a bare edge (no triangle carries it).
   const std::vector<int>& bare_at(int v) const { return bare_[static_cast<std::size_t>(v)]; }
 
@@ -51,7 +64,7 @@ class TriangleComplex {
   void unlink(int t, int v);
 
   std::vector<std::array<int, 3>> tri_;
-  std::vector<char> alive_;
+  std::vector<char> alive_, pinned_;
   std::vector<int> face_of_;  ///< the polygon of `original` a triangle comes from
   std::vector<std::vector<int>> at_, bare_;
   std::vector<int> bare_solid_;  ///< per vertex with bare edges: the solid of its first edge

@@ -130,6 +130,12 @@ void check_params(const ComputeParams& params) {
   const double theta = params.medial.theta_deg;
   if (!std::isfinite(theta) || theta <= 0 || theta >= 90)
     throw InvalidInput("theta must be in (0, 90) degrees, got " + message_number(theta));
+  const double tol = params.compact.tolerance;
+  if (!std::isfinite(tol) || tol < 0)
+    throw InvalidInput("the simplification tolerance must be a finite number >= 0, got " + message_number(tol));
+  if (params.compact.relative && tol >= 1)
+    throw InvalidInput("the simplification tolerance as a share of the diagonal must be below 1 (100 %), got " +
+                       message_number(tol));
   const double rho = params.medial.rho;
   if (!std::isfinite(rho) || rho <= 0) throw InvalidInput("rho must be a positive finite number, got " + message_number(rho));
 }
@@ -765,6 +771,7 @@ ComputeResult compute_as_given(const TopoDS_Shape& shape, const ComputeParams& p
       run_deferred_checks(checks);
       throw;
     }
+    stats.diagonal = m.diag;
 
     for (int i = 0; i < n; ++i) {
       const TopoDS_Solid& solid = solids[i];
@@ -910,6 +917,15 @@ ComputeResult compute_as_given(const TopoDS_Shape& shape, const ComputeParams& p
   }
   report(progress, "output", 0.0);
   result.mesh.sort_canonically();
+  if (params.compact.tolerance > 0) {
+    const auto t_compact = Clock::now();
+    SimplifyStats st;
+    const double tol = params.compact.relative ? params.compact.tolerance * stats.diagonal : params.compact.tolerance;
+    result.mesh = simplify_axis(result.mesh, tol, &st);
+    result.mesh.sort_canonically();
+    stats.simplify = st;
+    add_timing(stats.timings, "compact", seconds_since(t_compact));
+  }
   stats.vertices = result.mesh.num_vertices();
   stats.faces = result.mesh.num_faces();
   stats.edges = result.mesh.num_edges();

@@ -3,12 +3,14 @@
 #pragma once
 
 #include <string>
+#include <optional>
 #include <vector>
 
 #include <TopoDS_Shape.hxx>
 
 #include "../progress.h"
 #include "../sampling/samples.h"
+#include "../compact/simplify_axis.h"
 #include "../types.h"
 
 namespace cadmedial {
@@ -79,6 +81,10 @@ struct ComputeStats {
   /// open construction surfaces, loose edges), one phrase each.
   std::vector<std::string> skipped;
   double peak_rss_mb = 0.0;
+  double diagonal = 0.0;          ///< of the solids' bounding box
+  /// With CompactParams::tolerance > 0: the compact mesh's figures (the full mesh's counts, the
+  /// largest error, the topology before and after).
+  std::optional<SimplifyStats> simplify;
 };
 
 struct ComputeResult {

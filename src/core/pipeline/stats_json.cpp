@@ -56,6 +56,19 @@ std::string stats_to_json(const ComputeStats& stats) {
     j += (i ? ", " : "") + quoted(stats.timings[i].first) + ": " + number(stats.timings[i].second);
   j += "},\n";
   j += "  \"peak_rss_mb\": " + number(stats.peak_rss_mb) + ",\n";
+  j += "  \"diagonal\": " + number(stats.diagonal) + ",\n";
+  if (stats.simplify) {
+    const SimplifyStats& c = *stats.simplify;
+    j += "  \"simplify\": {\"tolerance\": " + number(c.tolerance) + ", \"max_error\": " + number(c.max_error) +
+         ", \"vertices_before\": " + std::to_string(c.vertices_before) + ", \"faces_before\": " +
+         std::to_string(c.faces_before) + ", \"edges_before\": " + std::to_string(c.edges_before) +
+         ", \"vertices_after\": " + std::to_string(c.vertices_after) + ", \"faces_after\": " +
+         std::to_string(c.faces_after) + ", \"edges_after\": " + std::to_string(c.edges_after) +
+         ", \"euler_before\": " + std::to_string(c.euler_before) + ", \"euler_after\": " +
+         std::to_string(c.euler_after) + ", \"components_before\": " + std::to_string(c.components_before) +
+         ", \"components_after\": " + std::to_string(c.components_after) + ", \"seconds\": " + number(c.seconds) +
+         "},\n";
+  }
   j += "  \"warnings\": [";
   for (std::size_t i = 0; i < stats.warnings.size(); ++i) j += (i ? ", " : "") + quoted(stats.warnings[i]);
   j += "],\n";

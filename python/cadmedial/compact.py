@@ -1,0 +1,54 @@
+"""The compact medial mesh (issue 35, item 2): the axis simplified within a tolerance.
+
+    import cadmedial
+    full = cadmedial.compute("part.step")
+    small = cadmedial.simplify(full, "0.5%")    # or a length in model units: simplify(full, 0.2)
+    small.stats["simplify"]                     # faces_before/after, max_error, euler_before/after, ...
+
+Every vertex of the compact mesh is a vertex of the full one (exact position and radius); every
+ball of the full axis lies within the tolerance of the compact mesh's ball at the nearest point
+(|dc| + |dr|), the compact mesh within it of the full one, with the same components and Euler
+characteristic; borders (rims) and seams keep their kind and their ends. See docs/compact.md.
+"""
+
+import numpy as np
+
+from . import _core
+from .result import MedialAxisResult
+
+
+def tolerance_of(result, tolerance):
+    """The tolerance in model units: a number as given, or "P%" of the solid's bounding-box
+    diagonal (stats["diagonal"]; for a loaded file, the axis's own)."""
+    if isinstance(tolerance, str):
+        text = tolerance.strip()
+        if not text.endswith("%"):
+            raise ValueError("tolerance must be a number or a share like '0.1%%', got %r" % (tolerance,))
+        share = float(text[:-1]) / 100.0
+        if not 0 < share < 1:
+            raise ValueError("tolerance must be between 0%% and 100%%, got %r" % (tolerance,))
+        diagonal = (result.stats or {}).get("diagonal")
+        if not diagonal:
+            v = np.asarray(result.vertices)
+            diagonal = float(np.linalg.norm(v.max(axis=0) - v.min(axis=0))) if len(v) else 0.0
+        return share * float(diagonal)
+    value = float(tolerance)
+    if not (value >= 0 and np.isfinite(value)):
+        raise ValueError("tolerance must be a finite number >= 0, got %r" % (tolerance,))
+    return value
+
+
+def simplify(result, tolerance):
+    """The compact MedialAxisResult of ``result`` within ``tolerance`` (model units or "P%").
+
+    Its faces are triangles, each with the kind and solid of the polygon it lies in; its stats
+    are the full result's with "simplify" added (tolerance, max_error, vertices/faces/edges
+    before and after, euler and components before and after, seconds) and "vertices", "faces"
+    and "edges" the compact mesh's.
+    """
+    tol = tolerance_of(result, tolerance)
+    mesh, figures = _core.simplify_mesh(result.mesh, tol)
+    stats = dict(result.stats or {})
+    stats["simplify"] = dict(figures)
+    stats["vertices"], stats["faces"], stats["edges"] = mesh.num_vertices, mesh.num_faces, mesh.num_edges
+    return MedialAxisResult(mesh, stats)
