@@ -190,21 +190,24 @@ class Simplifier {
     return compact::ball_to_triangle(p, ball(tr[0]), ball(tr[1]), ball(tr[2]));
   }
 
-  Role role(int u) const {
+  // nb: gets u's neighbours.
+  Role role(int u, std::vector<int>& nb) const {
     Role r;
+    nb.clear();
     if (c_.triangles_at(u).empty() || !c_.bare_at(u).empty() || c_.pinned(u)) return r;
-    std::vector<int> nb;
+    std::vector<int> counts;
     c_.neighbours(u, nb);
+    c_.side_counts(u, nb, counts);
     int features = 0, count = -1;
-    for (int x : nb) {
-      const int k = c_.side_count(u, x);
+    for (std::size_t i = 0; i < nb.size(); ++i) {
+      const int x = nb[i], k = counts[i];
       if (k == 2) continue;
       if (features == 2 || (count >= 0 && k != count)) return r;  // a junction
       count = k;
       r.along[features++] = x;
     }
     if (features == 1) return r;  // a seam or border ends here
-    if (!c_.link_connected(u)) return r;
+    if (!c_.link_connected(u, nb)) return r;
     r.movable = true;
     return r;
   }
@@ -238,8 +241,8 @@ class Simplifier {
   }
 
   // The cheap part of a contraction's error (u's own ball), or infinity when it may not be made.
-  double quick_cost(int u, int v, const Role& r) const {
-    if (!c_.can_contract(u, v) || !keeps_shape(u, v)) return std::numeric_limits<double>::infinity();
+  double quick_cost(int u, int v, const Role& r, const std::vector<int>& nu) const {
+    if (!c_.can_contract(u, v, nu) || !keeps_shape(u, v)) return std::numeric_limits<double>::infinity();
     const Ball p = ball(u);
     double e = std::numeric_limits<double>::infinity();
     for (int t : c_.triangles_at(u)) {
@@ -254,19 +257,20 @@ class Simplifier {
   }
 
   void push_best(int u) {
-    const Role r = role(u);
+    std::vector<int> nu;
+    const Role r = role(u, nu);
     if (!r.movable) return;
     std::vector<int> targets;
     if (r.on_feature()) {
       targets = {r.along[0], r.along[1]};
     } else {
-      c_.neighbours(u, targets);
+      targets = nu;
     }
     const auto& failed = failed_[static_cast<std::size_t>(u)];
     Candidate best{std::numeric_limits<double>::infinity(), u, -1, stamp_[static_cast<std::size_t>(u)]};
     for (int v : targets) {
       if (std::find(failed.begin(), failed.end(), v) != failed.end()) continue;
-      const double e = quick_cost(u, v, r);
+      const double e = quick_cost(u, v, r, nu);
       if (e <= tol_ && (e < best.cost || (e == best.cost && v < best.v))) best.cost = e, best.v = v;
     }
     if (best.v >= 0) queue_.push(best);
@@ -275,10 +279,11 @@ class Simplifier {
   // The whole check of contracting u into v: the link condition, the shape, and every ball the
   // triangles (and sides) of u stand for within the tolerance of what stands for it after.
   bool plan_contraction(int u, int v, Plan& plan) const {
-    const Role r = role(u);
+    std::vector<int> nu;
+    const Role r = role(u, nu);
     if (!r.movable) return false;
     if (r.on_feature() ? (r.along[0] != v && r.along[1] != v) : false) return false;
-    if (!c_.can_contract(u, v) || !keeps_shape(u, v)) return false;
+    if (!c_.can_contract(u, v, nu) || !keeps_shape(u, v)) return false;
     plan = Plan{};
     plan.u = u, plan.v = v;
     std::vector<int> moved;
@@ -288,11 +293,16 @@ class Simplifier {
     }
     if (moved.empty()) return false;
     plan.points.push_back(u);
-    for (int t : c_.triangles_at(u))
-      for (int p : carried_[static_cast<std::size_t>(t)]) plan.points.push_back(p);
-    plan.home.resize(plan.points.size());
+    plan.home.push_back(-1);
+    for (int t : c_.triangles_at(u)) {
+      const bool stays = std::find(moved.begin(), moved.end(), t) != moved.end();
+      for (int p : carried_[static_cast<std::size_t>(t)]) plan.points.push_back(p), plan.home.push_back(stays ? t : -1);
+    }
     for (std::size_t i = 0; i < plan.points.size(); ++i) {
       const Ball p = ball(plan.points[i]);
+      // A point whose triangle moves stays with it if it is near enough: the nearest of the
+      // moved triangles is not needed, any within the tolerance will do.
+      if (plan.home[i] >= 0 && to_triangle(p, plan.home[i], u, v) <= tol_) continue;
       double best = std::numeric_limits<double>::infinity();
       for (int t : moved) {
         const double e = to_triangle(p, t, u, v);

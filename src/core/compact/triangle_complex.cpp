@@ -110,13 +110,21 @@ TriangleComplex::TriangleComplex(const MedialMesh& mesh) : at_(mesh.num_vertices
   }
 }
 
+unsigned TriangleComplex::next_epoch() const {
+  if (mark_.size() != at_.size()) mark_.assign(at_.size(), 0), slot_.assign(at_.size(), 0), epoch_ = 0;
+  if (++epoch_ == 0) std::fill(mark_.begin(), mark_.end(), 0), epoch_ = 1;
+  return epoch_;
+}
+
 void TriangleComplex::neighbours(int v, std::vector<int>& out) const {
   out.clear();
+  const unsigned e = next_epoch();
+  mark_[static_cast<std::size_t>(v)] = e;
   for (int t : triangles_at(v))
     for (int x : triangle(t))
-      if (x != v && !contains(out, x)) out.push_back(x);
+      if (mark_[static_cast<std::size_t>(x)] != e) mark_[static_cast<std::size_t>(x)] = e, out.push_back(x);
   for (int x : bare_at(v))
-    if (!contains(out, x)) out.push_back(x);
+    if (mark_[static_cast<std::size_t>(x)] != e) mark_[static_cast<std::size_t>(x)] = e, out.push_back(x);
 }
 
 int TriangleComplex::side_count(int u, int v) const {
@@ -125,9 +133,25 @@ int TriangleComplex::side_count(int u, int v) const {
   return n;
 }
 
+void TriangleComplex::side_counts(int u, const std::vector<int>& nb, std::vector<int>& counts) const {
+  const unsigned e = next_epoch();
+  counts.assign(nb.size(), 0);
+  for (std::size_t k = 0; k < nb.size(); ++k) {
+    mark_[static_cast<std::size_t>(nb[k])] = e;
+    slot_[static_cast<std::size_t>(nb[k])] = static_cast<unsigned>(k);
+  }
+  for (int t : triangles_at(u))
+    for (int x : triangle(t))
+      if (x != u && mark_[static_cast<std::size_t>(x)] == e) ++counts[slot_[static_cast<std::size_t>(x)]];
+}
+
 bool TriangleComplex::link_connected(int v) const {
   std::vector<int> nb;
   neighbours(v, nb);
+  return link_connected(v, nb);
+}
+
+bool TriangleComplex::link_connected(int v, const std::vector<int>& nb) const {
   if (nb.size() < 2) return true;
   std::vector<int> parent(nb.size());
   std::iota(parent.begin(), parent.end(), 0);
@@ -144,6 +168,12 @@ bool TriangleComplex::link_connected(int v) const {
 }
 
 bool TriangleComplex::can_contract(int u, int v) const {
+  std::vector<int> nu;
+  neighbours(u, nu);
+  return can_contract(u, v, nu);
+}
+
+bool TriangleComplex::can_contract(int u, int v, const std::vector<int>& nu) const {
   if (!bare_at(u).empty() || u == v) return false;
   // W: the third vertices of the triangles on uv.
   std::vector<int> wings;
@@ -152,11 +182,11 @@ bool TriangleComplex::can_contract(int u, int v) const {
       for (int x : triangle(t))
         if (x != u && x != v) wings.push_back(x);
   if (wings.empty()) return false;
-  std::vector<int> nu, nv;
-  neighbours(u, nu);
-  neighbours(v, nv);
+  std::vector<int> nv;
+  neighbours(v, nv);  // its marks stay until the next query
+  const unsigned e = epoch_;
   for (int x : nu)
-    if (x != v && contains(nv, x) && !contains(wings, x)) return false;
+    if (x != v && mark_[static_cast<std::size_t>(x)] == e && !contains(wings, x)) return false;
   // A side ab opposite both u and v (triangles uab and vab): the contraction would double it.
   for (int t : triangles_at(u)) {
     const auto& tr = triangle(t);

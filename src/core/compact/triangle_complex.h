@@ -41,15 +41,20 @@ class TriangleComplex {
   void neighbours(int v, std::vector<int>& out) const;
   /// How many live triangles hold side uv: 2 inside a sheet, 1 at a border, 3 or more at a seam.
   int side_count(int u, int v) const;
+  /// The same for every neighbour of u at once: counts[k] for nb[k] (nb from neighbours(u)).
+  void side_counts(int u, const std::vector<int>& nb, std::vector<int>& counts) const;
   /// Whether the link of v (the sides opposite v in its triangles) is connected: else v pinches
   /// sheets that meet only there, and it must stay.
   bool link_connected(int v) const;
+  bool link_connected(int v, const std::vector<int>& nb) const;
 
   /// Whether contracting u into v (u's triangles take v, those holding side uv vanish) keeps the
   /// homotopy type (link condition: the vertices next to both u and v are those of the triangles
   /// on uv, and no side is opposite both) and the kind of every side at v (a side of two triangles
   /// stays one, a border or seam side keeps its count). u must have no bare edge.
   bool can_contract(int u, int v) const;
+  /// The same with u's neighbours (neighbours(u)) at hand.
+  bool can_contract(int u, int v, const std::vector<int>& nu) const;
   /// Contracts u into v (can_contract must hold). `vanished` gets the triangles that held uv,
   /// `moved` those of u that now hold v.
   void contract(int u, int v, std::vector<int>& vanished, std::vector<int>& moved);
@@ -62,7 +67,11 @@ class TriangleComplex {
 
  private:
   void unlink(int t, int v);
+  /// Marks (per vertex, an epoch) for set tests in time linear in the sets.
+  unsigned next_epoch() const;
 
+  mutable std::vector<unsigned> mark_, slot_;
+  mutable unsigned epoch_ = 0;
   std::vector<std::array<int, 3>> tri_;
   std::vector<char> alive_, pinned_;
   std::vector<int> face_of_;  ///< the polygon of `original` a triangle comes from
