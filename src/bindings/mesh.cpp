@@ -251,6 +251,7 @@ void bind_mesh(py::module_& m) {
         d["vertices_after"] = st.vertices_after, d["faces_after"] = st.faces_after;
         d["edges_after"] = st.edges_after;
         d["max_error"] = st.max_error;
+        d["max_containment"] = st.max_containment;
         d["euler_before"] = st.euler_before, d["euler_after"] = st.euler_after;
         d["components_before"] = st.components_before, d["components_after"] = st.components_after;
         d["seconds"] = st.seconds;

@@ -1,4 +1,5 @@
 // `cadmedial compute`: everything that can be refused is refused before the long computation.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <sstream>
@@ -58,7 +59,8 @@ int run_compute(const Args& args) {
     summary << " and " << result.mesh.num_faces() << " faces";
   if (const auto& c = result.stats.simplify)
     summary << " (compact: from " << c->vertices_before << " vertices and " << c->faces_before
-            << " faces, every ball within " << c->max_error << " of it, tolerance " << c->tolerance << ")";
+            << " faces, every ball within " << std::max(c->max_error, c->max_containment)
+            << " of the other mesh's, tolerance " << c->tolerance << ")";
   summary << " in " << seconds << " s; wrote " << args.output;
   if (!args.stats.empty()) summary << " and " << args.stats;
   summary << ".\n";

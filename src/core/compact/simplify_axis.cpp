@@ -81,6 +81,19 @@ class FullMeshIndex {
     });
   }
 
+  /// The least |dc| + |dr| from ball p to the pieces of the full mesh,
+  /// looking within `reach` (beyond it: reach).
+  /// Stops once it is at most `enough`.
+  double excess(const Ball& p, double reach, double enough) const {
+    double best = reach;
+    grid_.any_near(p.c, reach + cell_, [&](int k) {
+      const auto& t = pieces_[static_cast<std::size_t>(k)];
+      best = std::min(best, compact::ball_to_triangle(p, ball(t[0]), ball(t[1]), ball(t[2])));
+      return best <= enough;
+    });
+    return best;
+  }
+
   /// Calls f(q) at the points of the lattice of triangle t with n steps a side.
   template <class F>
   void for_lattice(const std::array<int, 3>& t, int n, F&& f) const {
@@ -142,6 +155,19 @@ class Simplifier {
       }
     }
     thin_bare_chains();
+  }
+
+  /// The largest |dc| + |dr| from a ball of the compact mesh to the full one, on a lattice of each
+  /// triangle with steps of at most a median side of the full mesh.
+  double max_containment() const {
+    double e = 0;
+    for (int t = 0; t < c_.num_triangles(); ++t) {
+      if (!c_.alive(t)) continue;
+      const auto& tr = c_.triangle(t);
+      const int n = std::clamp(static_cast<int>(std::ceil(full_.longest_side(tr) / full_.cell())), 2, 16);
+      full_.for_lattice(tr, n, [&](const Point3& q) { e = std::max(e, full_.excess(interpolated(tr, q), 2 * tol_, e)); });
+    }
+    return e;
   }
 
   /// The largest error of a removed vertex's ball to the triangle or side standing for it.
@@ -240,22 +266,10 @@ class Simplifier {
     return true;
   }
 
-  // The cheap part of a contraction's error (u's own ball), or infinity when it may not be made.
-  double quick_cost(int u, int v, const Role& r, const std::vector<int>& nu) const {
-    if (!c_.can_contract(u, v, nu) || !keeps_shape(u, v)) return std::numeric_limits<double>::infinity();
-    const Ball p = ball(u);
-    double e = std::numeric_limits<double>::infinity();
-    for (int t : c_.triangles_at(u)) {
-      const auto& tr = c_.triangle(t);
-      if (tr[0] != v && tr[1] != v && tr[2] != v) e = std::min(e, to_triangle(p, t, u, v));
-    }
-    if (r.on_feature()) {
-      const int w = r.along[0] == v ? r.along[1] : r.along[0];
-      e = std::max(e, compact::ball_to_segment(p, ball(v), ball(w)));
-    }
-    return e;
-  }
-
+  // Queues u's shortest side along which it may move (the checks wait until it comes out of the
+  // queue: most candidates are queued again before that). Shortest first gave fewer faces than
+  // least error first, in less time: Y-rod mount at 0.1 %, 6,394 faces in 3.6 s against 6,774
+  // in 8.7 s.
   void push_best(int u) {
     std::vector<int> nu;
     const Role r = role(u, nu);
@@ -270,8 +284,9 @@ class Simplifier {
     Candidate best{std::numeric_limits<double>::infinity(), u, -1, stamp_[static_cast<std::size_t>(u)]};
     for (int v : targets) {
       if (std::find(failed.begin(), failed.end(), v) != failed.end()) continue;
-      const double e = quick_cost(u, v, r, nu);
-      if (e <= tol_ && (e < best.cost || (e == best.cost && v < best.v))) best.cost = e, best.v = v;
+      const Point3 d = compact::sub(mesh_.vertices[static_cast<std::size_t>(u)], mesh_.vertices[static_cast<std::size_t>(v)]);
+      const double length = compact::dot(d, d);
+      if (length < best.cost || (length == best.cost && v < best.v)) best.cost = length, best.v = v;
     }
     if (best.v >= 0) queue_.push(best);
   }
@@ -317,7 +332,7 @@ class Simplifier {
       for (int& x : tr)
         if (x == u) x = v;
       // Steps of at most half a median side of the full mesh (its corners are its own vertices).
-      const int n = std::clamp(static_cast<int>(std::ceil(2 * full_.longest_side(tr) / full_.cell())), 2, 16);
+      const int n = std::clamp(static_cast<int>(std::ceil(2 * full_.longest_side(tr) / full_.cell())), 2, 8);
       bool near = true;
       full_.for_lattice(tr, n, [&](const Point3& q) {
         if (near && q != mesh_.vertices[static_cast<std::size_t>(tr[0])] &&
@@ -417,6 +432,7 @@ MedialMesh simplify_axis(const MedialMesh& mesh, double tolerance, SimplifyStats
     stats->faces_after = out.num_faces();
     stats->edges_after = out.num_edges();
     stats->max_error = s.max_error();
+    stats->max_containment = s.max_containment();
     stats->euler_before = before.euler, stats->euler_after = after.euler;
     stats->components_before = before.components, stats->components_after = after.components;
     stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

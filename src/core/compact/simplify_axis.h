@@ -3,7 +3,8 @@
 // (exact positions and radii), while
 //  - every removed vertex's ball stays within `tolerance` of the compact mesh's ball at the
 //    nearest point (|dc| + |dr|, which bounds how much the union of balls moves: the
-//    reconstruction error),
+//    reconstruction error), and every point of the compact mesh within it of the full mesh
+//    (checked on a lattice of its triangles, half a median side of the full mesh apart),
 //  - the topology stays (link condition: components and Euler characteristic unchanged),
 //  - the structure stays: a border (rim) or seam side keeps its kind and a vertex of one moves
 //    only along it; junctions (where seams meet or end), vertices pinching sheets and the
@@ -21,8 +22,12 @@ struct SimplifyStats {
   double tolerance = 0.0;
   std::size_t vertices_before = 0, faces_before = 0, edges_before = 0;
   std::size_t vertices_after = 0, faces_after = 0, edges_after = 0;
-  /// The largest |dc| + |dr| of a removed vertex's ball to the compact mesh (at most tolerance).
+  /// The largest |dc| + |dr| of a removed vertex's ball to the compact mesh (at most tolerance),
+  /// and of a ball of the compact mesh to the full one, measured on a lattice of its triangles a
+  /// median side of the full mesh apart (the simplifier checks twice as densely: between its
+  /// points this may exceed the tolerance a little).
   double max_error = 0.0;
+  double max_containment = 0.0;
   long euler_before = 0, euler_after = 0;
   std::size_t components_before = 0, components_after = 0;
   double seconds = 0.0;

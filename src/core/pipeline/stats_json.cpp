@@ -60,6 +60,7 @@ std::string stats_to_json(const ComputeStats& stats) {
   if (stats.simplify) {
     const SimplifyStats& c = *stats.simplify;
     j += "  \"simplify\": {\"tolerance\": " + number(c.tolerance) + ", \"max_error\": " + number(c.max_error) +
+         ", \"max_containment\": " + number(c.max_containment) +
          ", \"vertices_before\": " + std::to_string(c.vertices_before) + ", \"faces_before\": " +
          std::to_string(c.faces_before) + ", \"edges_before\": " + std::to_string(c.edges_before) +
          ", \"vertices_after\": " + std::to_string(c.vertices_after) + ", \"faces_after\": " +
