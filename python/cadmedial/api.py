@@ -140,8 +140,9 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
               thinnest of them and where it is. Like the program's --min-feature.
 
     simplify  None (default) or a tolerance (model units, or "P%" of the bounding-box diagonal):
-              returns the compact mesh of cadmedial.simplify(result, simplify) (docs/compact.md).
-              Like the program's --simplify.
+              returns the compact mesh (docs/compact.md), its vertices first moved onto the
+              exact axis of the B-rep; stats gain "snap" and "simplify". Like the program's
+              --simplify.
 
     Returns a MedialAxisResult. Raises InvalidInput (bad file, shape or parameter; also a
     ValueError), GeometryError (a stage failed; also a RuntimeError) or Cancelled.
@@ -151,14 +152,13 @@ def compute(source, spacing=None, samples=None, theta=5.0, rho=8.0, progress=Non
     spacing, samples = _density(spacing, samples)
     plain_medial = _flag("plain_medial", plain_medial)
     adapt = _flag("adapt", adapt)
+    from .compact import parse_tolerance
+    tolerance, relative = parse_tolerance(simplify) if simplify is not None else (0.0, False)
     mesh, stats = _core.compute_medial_axis(shape, spacing, samples, _number("theta", theta),
                                             _number("rho", rho), progress, plain_medial, adapt,
-                                            refine, min_feature=_min_feature(min_feature))
-    result = MedialAxisResult(mesh, json.loads(stats))
-    if simplify is None:
-        return result
-    from .compact import simplify as _simplify
-    return _simplify(result, simplify)
+                                            refine, min_feature=_min_feature(min_feature),
+                                            simplify=tolerance, simplify_relative=relative)
+    return MedialAxisResult(mesh, json.loads(stats))
 
 
 def load(path):

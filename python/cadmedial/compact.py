@@ -5,7 +5,9 @@
     small = cadmedial.simplify(full, "0.5%")    # or a length in model units: simplify(full, 0.2)
     small.stats["simplify"]                     # faces_before/after, max_error, euler_before/after, ...
 
-Every vertex of the compact mesh is a vertex of the full one (exact position and radius); every
+compute(..., simplify=) first moves the Voronoi vertices onto the exact axis of the B-rep
+(snap_to_axis); simplify(result, ...) works on the result as it is. Every vertex of the compact
+mesh is then a vertex of that (snapped or given) mesh, with its radius; every
 ball of the full axis lies within the tolerance of the compact mesh's ball at the nearest point
 (|dc| + |dr|), the compact mesh within it of the full one, with the same components and Euler
 characteristic; borders (rims) and seams keep their kind and their ends. See docs/compact.md.
@@ -17,29 +19,44 @@ from . import _core
 from .result import MedialAxisResult
 
 
-def tolerance_of(result, tolerance):
-    """The tolerance in model units: a number as given, or "P%" of the solid's bounding-box
-    diagonal (stats["diagonal"]; for a loaded file, the axis's own)."""
+def parse_tolerance(tolerance):
+    """(value, relative): a number in model units, or "P%" as a share of the diagonal."""
     if isinstance(tolerance, str):
         text = tolerance.strip()
         if not text.endswith("%"):
             raise ValueError("tolerance must be a number or a share like '0.1%%', got %r" % (tolerance,))
-        share = float(text[:-1]) / 100.0
+        try:
+            share = float(text[:-1]) / 100.0
+        except ValueError:
+            raise ValueError("tolerance must be a number or a share like '0.1%%', got %r" % (tolerance,))
         if not 0 < share < 1:
             raise ValueError("tolerance must be between 0%% and 100%%, got %r" % (tolerance,))
-        diagonal = (result.stats or {}).get("diagonal")
-        if not diagonal:
-            v = np.asarray(result.vertices)
-            diagonal = float(np.linalg.norm(v.max(axis=0) - v.min(axis=0))) if len(v) else 0.0
-        return share * float(diagonal)
+        return share, True
     value = float(tolerance)
     if not (value >= 0 and np.isfinite(value)):
         raise ValueError("tolerance must be a finite number >= 0, got %r" % (tolerance,))
-    return value
+    return value, False
+
+
+def tolerance_of(result, tolerance):
+    """The tolerance in model units: a number as given, or "P%" of the solid's bounding-box
+    diagonal (stats["diagonal"]; for a loaded file, the axis's own)."""
+    value, relative = parse_tolerance(tolerance)
+    if not relative:
+        return value
+    diagonal = (result.stats or {}).get("diagonal")
+    if not diagonal:
+        v = np.asarray(result.vertices)
+        diagonal = float(np.linalg.norm(v.max(axis=0) - v.min(axis=0))) if len(v) else 0.0
+    return value * float(diagonal)
 
 
 def simplify(result, tolerance):
     """The compact MedialAxisResult of ``result`` within ``tolerance`` (model units or "P%").
+
+    From a result alone (no B-rep) the vertices are not moved onto the exact axis first, as
+    compute(..., simplify=) and the program's --simplify do: the Voronoi vertices' zig-zag then
+    stays within the tolerance, and fewer of them go.
 
     Its faces are triangles, each with the kind and solid of the polygon it lies in; its stats
     are the full result's with "simplify" added (tolerance, max_error, vertices/faces/edges

@@ -161,19 +161,24 @@ void bind_compute(py::module_& m) {
   m.def(
       "compute_medial_axis",
       [](const TopoDS_Shape& shape, double spacing, long long samples, double theta, double rho,
-         const py::object& progress, bool plain_medial, bool adapt, bool refine, double min_feature) {
+         const py::object& progress, bool plain_medial, bool adapt, bool refine, double min_feature,
+         double simplify, bool simplify_relative) {
         if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
           throw py::type_error("progress must be callable(stage, fraction) or None");
-        ComputeResult result =
-            compute_with_callback(shape, make_params(spacing, samples, theta, rho, plain_medial, adapt, refine, min_feature),
-                              progress);
+        ComputeParams params = make_params(spacing, samples, theta, rho, plain_medial, adapt, refine, min_feature);
+        params.compact.tolerance = simplify;
+        params.compact.relative = simplify_relative;
+        ComputeResult result = compute_with_callback(shape, params, progress);
         std::string stats = stats_to_json(result.stats);
         return std::make_pair(std::move(result.mesh), std::move(stats));
       },
       py::arg("shape"), py::arg("spacing") = 0.0, py::arg("samples") = 0, py::arg("theta") = 5.0,
       py::arg("rho") = 8.0, py::arg("progress") = py::none(), py::arg("plain_medial") = false,
       py::arg("adapt") = true, py::arg("refine") = false, py::arg("min_feature") = 0.0,
+      py::arg("simplify") = 0.0, py::arg("simplify_relative") = false,
       "Inner medial axis of every solid of the shape: (MedialMesh, stats as JSON text).\n"
+      "simplify > 0: the compact mesh within that tolerance (model units, or a share of the "
+      "diagonal with simplify_relative), its vertices first moved onto the exact axis.\n"
       "plain_medial runs the paper's plain MEDIAL (section 3: pole umbrellas, no edge or corner "
       "completion) instead of CAD_MEDIAL; theta is not changed (the paper uses 22.5 for it).\n"
       "adapt=False samples at one spacing everywhere (no refinement of thin walls).\n"

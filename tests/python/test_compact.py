@@ -115,14 +115,39 @@ def test_compact_mesh_keeps_topology_and_every_ball(model):
     assert worst_gap(small, full, tol, probe=True) <= 1.25 * tol
 
 
-def test_compact_vertices_are_full_vertices(box_step):
+def test_simplify_keeps_vertices_of_the_result(box_step):
     full = cadmedial.compute(box_step, samples=3000)
-    small = cadmedial.compute(box_step, samples=3000, simplify=0.3)
+    small = cadmedial.simplify(full, 0.3)
     keys = {tuple(v) + (r,) for v, r in zip(np.asarray(full.vertices).tolist(), np.asarray(full.radius).tolist())}
     assert all(tuple(v) + (r,) in keys for v, r in zip(np.asarray(small.vertices).tolist(),
                                                        np.asarray(small.radius).tolist()))
     assert small.stats["simplify"]["faces_before"] == full.num_faces
     assert small.stats["simplify"]["max_error"] <= 0.3
+
+
+def box_axis_gap(result):
+    """Per vertex of the 10 x 20 x 30 box's axis: (second smallest - smallest) distance to its
+    six planes, and |radius - smallest|. On the exact axis both are 0: the ball touches two."""
+    v = np.asarray(result.vertices)
+    d = np.sort(np.concatenate([v, np.array([10.0, 20.0, 30.0]) - v], axis=1), axis=1)
+    return d[:, 1] - d[:, 0], np.abs(np.asarray(result.radius) - d[:, 0])
+
+
+def test_compute_simplify_snaps_vertices_onto_the_exact_axis(box_step):
+    full = cadmedial.compute(box_step, samples=3000)
+    small = cadmedial.compute(box_step, samples=3000, simplify="0.1%")
+    snap = small.stats["snap"]
+    assert snap["snapped"] >= 0.8 * snap["vertices"]
+    gap_full, _ = box_axis_gap(full)
+    gap, radius_off = box_axis_gap(small)
+    inner = np.asarray(small.radius) > 0.5  # the rims meet the edges: their vertices stay
+    tol = 1e-7 * small.stats["diagonal"]
+    # The Voronoi vertices are off the axis; the compact mesh's are on it, with exact radii.
+    assert np.mean(gap_full[np.asarray(full.radius) > 0.5] > 1e-3) > 0.5
+    assert np.mean(gap[inner] <= tol) >= 0.95
+    assert np.all(radius_off <= tol)
+    assert small.num_faces * 10 <= full.num_faces
+    assert small.stats["simplify"]["euler_after"] == small.stats["simplify"]["euler_before"]
 
 
 def test_bad_tolerances_are_refused(box_step):

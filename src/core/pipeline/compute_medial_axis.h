@@ -11,6 +11,7 @@
 #include "../progress.h"
 #include "../sampling/samples.h"
 #include "../compact/simplify_axis.h"
+#include "../exact/snap_to_axis.h"
 #include "../types.h"
 
 namespace cadmedial {
@@ -85,6 +86,8 @@ struct ComputeStats {
   /// With CompactParams::tolerance > 0: the compact mesh's figures (the full mesh's counts, the
   /// largest error, the topology before and after).
   std::optional<SimplifyStats> simplify;
+  /// With it: how the vertices were moved onto the exact axis first (snap_to_axis.h), over the solids.
+  std::optional<SnapStats> snap;
 };
 
 struct ComputeResult {

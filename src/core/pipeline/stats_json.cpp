@@ -57,6 +57,11 @@ std::string stats_to_json(const ComputeStats& stats) {
   j += "},\n";
   j += "  \"peak_rss_mb\": " + number(stats.peak_rss_mb) + ",\n";
   j += "  \"diagonal\": " + number(stats.diagonal) + ",\n";
+  if (stats.snap) {
+    const SnapStats& n = *stats.snap;
+    j += "  \"snap\": {\"vertices\": " + std::to_string(n.vertices) + ", \"snapped\": " + std::to_string(n.snapped) +
+         ", \"max_move\": " + number(n.max_move) + ", \"mean_move\": " + number(n.mean_move) + "},\n";
+  }
   if (stats.simplify) {
     const SimplifyStats& c = *stats.simplify;
     j += "  \"simplify\": {\"tolerance\": " + number(c.tolerance) + ", \"max_error\": " + number(c.max_error) +
