@@ -90,7 +90,7 @@ def test_compact_mesh_is_the_simplified_axis_with_the_full_axis_topology(doc):
     assert feature.Simplified == ""
 
 
-def test_a_new_simplify_simplifies_again_without_the_engine(doc, monkeypatch):
+def test_a_new_simplify_simplifies_again_without_the_engine(doc, monkeypatch, capfd):
     box = add_box(doc)
     feature = medial_app.make_medial_axis(box, samples=SAMPLES)
     full = feature.Proxy.full
@@ -99,10 +99,13 @@ def test_a_new_simplify_simplifies_again_without_the_engine(doc, monkeypatch):
     def engine(*args, **kwargs):
         raise AssertionError("the medial axis was computed again")
     monkeypatch.setattr(cadmedial, "compute", engine)
+    capfd.readouterr()
     feature.Simplify = 2.0
     doc.recompute()
     assert feature.Status == "ok" and feature.Proxy.full is full
     assert feature.Mesh.CountFacets == cadmedial.simplify(full, "2%").num_faces < at_default
+    out, err = capfd.readouterr()  # the report view: what it gave, and that the axis was kept
+    assert "%s: compact: %s (the axis not computed again)" % (feature.Label, feature.Simplified) in out + err
     assert len(feature.RadiusColors) == feature.Mesh.CountPoints
     feature.Simplify = 0.0
     doc.recompute()

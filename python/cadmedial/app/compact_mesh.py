@@ -10,8 +10,8 @@
 
 The default, measured on the Y-rod mount and NIST CTC 01 at their automatic density
 (docs/workbench.md, Compact mesh): 0.2 % keeps 1/14 and 1/10 of the polygons (1/36 and 1/26 of
-the triangles) in files 31 and 21 times smaller, which open 16 and 18 times faster; 0.5 % halves
-the faces again for 2.5 times the error and no faster, 1 % takes twice as long.
+the triangles) in files 31 and 21 times smaller, which open 19 and 13 times faster; 0.5 % halves
+the faces again for 2.5 times the error and is no faster, 1 % takes twice as long.
 """
 
 import cadmedial
