@@ -1,7 +1,8 @@
 """From a MedialAxisResult to what a MedialAxis object keeps (mesh, colours, counts, PLY file), and
 back. Split in two so that the slow half can run in a worker thread:
 
-    stored = prepare_result(result)   # any thread: builds the Mesh, the colours, the PLY file
+    stored = prepare_result(result, simplify=0.2)  # any thread: simplifies (0: keeps the full
+                                                   # axis), builds the Mesh, colours, PLY file
     store_result(obj, stored)         # the thread that owns the document: assigns properties
 
 No proxy class here, so that both document objects can import this module without importing
@@ -17,15 +18,22 @@ import Mesh
 
 import cadmedial
 from . import color_range as colors
+from .compact_mesh import compact_of, simplify_seconds, summary
 from .registry import let_gui_breathe
 
 
 class StoredResult:
     """What store_result() assigns, built from one MedialAxisResult. Owns a temporary folder
-    holding the PLY file until store_result() (or discard()) removes it."""
+    holding the PLY file until store_result() (or discard()) removes it.
 
-    def __init__(self, result, color_range=None):
-        self.result = result
+    full     the engine's MedialAxisResult
+    percent  the Simplify it was made for (0: the full axis)
+    result   what the object shows and keeps: the compact mesh of full, or full itself for 0"""
+
+    def __init__(self, result, color_range=None, simplify=0.0):
+        self.full = result
+        self.percent = float(simplify or 0.0)
+        result = self.result = compact_of(result, self.percent)
         self.mesh = Mesh.Mesh()
         # False: no manifold check. The medial surface is non-manifold where sheets meet, and the
         # check (also done by Mesh.Mesh((points, facets))) would delete every facet at a junction.
@@ -46,15 +54,16 @@ class StoredResult:
         shutil.rmtree(self.folder, ignore_errors=True)
 
 
-def prepare_result(result, color_range=None):
+def prepare_result(result, color_range=None, simplify=0.0):
     """The StoredResult of a MedialAxisResult (slow: run it off the GUI thread), coloured for
-    color_range (low, high), or for its radii when None."""
-    return StoredResult(result, color_range)
+    color_range (low, high), or for its radii when None; simplify: percent of the diagonal for
+    the compact mesh (compact_mesh.py), 0 for the full axis."""
+    return StoredResult(result, color_range, simplify)
 
 
 def store_result(obj, stored):
-    """Puts a StoredResult (or a MedialAxisResult, prepared here) into obj's Mesh, colours,
-    counts and ResultFile."""
+    """Puts a StoredResult (or a MedialAxisResult, prepared here as it is) into obj's Mesh,
+    colours, counts and ResultFile: those of the compact mesh when it was made for a Simplify."""
     if not isinstance(stored, StoredResult):
         stored = prepare_result(stored, colors.set_range(obj))
     result = stored.result
@@ -79,8 +88,13 @@ def store_result(obj, stored):
         obj.VertexCount = result.num_vertices
         obj.FaceCount = result.num_faces
         obj.EdgeCount = result.num_edges
-        obj.Timings = ["%s: %.3f s" % (stage, seconds)
-                       for stage, seconds in stats.get("timings", {}).items()]
+        timings = ["%s: %.3f s" % (stage, seconds)
+                   for stage, seconds in stats.get("timings", {}).items()]
+        if "simplify" in stats:
+            timings.append("simplify: %.3f s" % simplify_seconds(result))
+        obj.Timings = timings
+        if "Simplified" in obj.PropertiesList:
+            obj.Simplified = summary(result)
         store_thinnest_wall(obj, stats)
         obj.ResultFile = stored.ply  # FreeCAD copies it into the document's own folder
     finally:
@@ -104,8 +118,9 @@ def store_thinnest_wall(obj, stats):
 
 
 def medial_result(obj):
-    """The MedialAxisResult of a MedialAxis object: in memory after a compute, else read from
-    its ResultFile (after reopening a document). Raises cadmedial.InvalidInput when there is none."""
+    """The MedialAxisResult of a MedialAxis object, the one its Mesh shows (the compact mesh when
+    Simplify > 0): in memory after a compute, else read from its ResultFile (after reopening a
+    document; its stats are empty then). Raises cadmedial.InvalidInput when there is none."""
     proxy = obj.Proxy
     if proxy.result is None:
         if not obj.ResultFile or not os.path.isfile(obj.ResultFile):

@@ -8,6 +8,7 @@ from PySide2 import QtCore, QtGui, QtWidgets
 
 import cadmedial
 from cadmedial.app import make_medial_axis
+from cadmedial.app.compact_mesh import DEFAULT_PERCENT, MAX_PERCENT, STEP, simplify_of
 from cadmedial.app.medial_axis import min_feature_of
 
 from .color_range_rows import ColorRangeRows
@@ -140,6 +141,16 @@ class TaskPanelMedialAxis:
             box.setMinimumWidth(60)
         rows.addRow("Theta", self.theta)
         rows.addRow("Rho", self.rho)
+        self.simplify = QtWidgets.QDoubleSpinBox()
+        self.simplify.setRange(0.0, MAX_PERCENT)
+        self.simplify.setSingleStep(STEP)
+        self.simplify.setDecimals(2)
+        self.simplify.setSuffix(" %")
+        self.simplify.setSpecialValueText("full axis")  # 0: no simplification
+        self.simplify.setMinimumWidth(60)
+        self.simplify.setToolTip("Compact mesh: every ball of the full axis within this share of "
+                                 "the part's diagonal (centre plus radius); full axis: every face")
+        rows.addRow("Simplify", self.simplify)
         layout.addWidget(selection)
 
         if self.edit is not None:  # a result to recolour: its colour range
@@ -166,6 +177,7 @@ class TaskPanelMedialAxis:
         self.rho.setValue(source.Rho if source is not None else 8.0)
         self.refine.setChecked(bool(source.Refine) if source is not None else True)
         self.min_feature.setValue(min_feature_of(source) if source is not None else 0.0)
+        self.simplify.setValue(simplify_of(source) if source is not None else DEFAULT_PERCENT)
         self.samples.setValue(samples or 20000)
         if spacing > 0:
             self.spacing.setValue(spacing)
@@ -197,7 +209,8 @@ class TaskPanelMedialAxis:
                 "samples": self.samples.value() if key == "samples" else None,
                 "theta": self.theta.value(), "rho": self.rho.value(),
                 "refine": self.refine.isChecked(),
-                "min_feature": self.min_feature.value() or None}
+                "min_feature": self.min_feature.value() or None,
+                "simplify": self.simplify.value()}
 
     def update_preview(self, *_):
         """Asks for a new estimate, EstimateDelay ms after the last change: typing 3000000 key
@@ -285,7 +298,7 @@ class TaskPanelMedialAxis:
     # -- running ----------------------------------------------------------------------------
     def _set_running(self, running):
         for widget in (self.mode, self.min_feature, self.theta, self.rho, self.refine,
-                       self.make_shape):
+                       self.simplify, self.make_shape):
             widget.setEnabled(not running)
         self.samples.setEnabled(False)
         self.spacing.setEnabled(False)
@@ -345,6 +358,7 @@ class TaskPanelMedialAxis:
         obj.Rho = p["rho"]
         obj.Refine = p["refine"]
         obj.MinFeature = p["min_feature"] or 0.0
+        obj.Simplify = p["simplify"]
         obj.Document.recompute()
         if obj.Status != "ok":
             self._show_error(obj.Status)

@@ -16,7 +16,9 @@ class ComputeJob:
     """Computes ``cadmedial.compute(shape, **params)`` for each shape in turn, in a thread.
 
     shapes  list of cadmedial._core.Shape (read in the GUI thread beforehand)
-    params  keyword arguments of cadmedial.compute (spacing, samples, theta, rho, refine)
+    params  keyword arguments of cadmedial.compute (spacing, samples, theta, rho, refine), and
+            "simplify": the MedialAxis's Simplify (percent of the diagonal, 0: the full axis),
+            which the thread simplifies each result for (cadmedial.app.prepare_result)
     After ``done``: ``results`` (one cadmedial.app StoredResult per shape) when all succeeded, else
     ``error`` (the exception; a cadmedial.Cancelled after cancel()).
     """
@@ -49,6 +51,8 @@ class ComputeJob:
         self._thread.join(timeout)
 
     def _run(self):
+        params = dict(self.params)
+        simplify = params.pop("simplify", 0.0)
         try:
             for index, shape in enumerate(self.shapes):
                 def report(stage, fraction, index=index):
@@ -56,9 +60,10 @@ class ComputeJob:
                     return not self._cancel.is_set()
                 if self._cancel.is_set():
                     raise cadmedial.Cancelled()
-                result = cadmedial.compute(shape, progress=report, **self.params)
-                self.progress = (index, "building the mesh and its colours", 1.0)
-                self.results.append(prepare_result(result))
+                result = cadmedial.compute(shape, progress=report, **params)
+                stage = "simplifying, building the mesh" if simplify else "building the mesh"
+                self.progress = (index, stage + " and its colours", 1.0)
+                self.results.append(prepare_result(result, simplify=simplify))
                 if self._cancel.is_set():
                     raise cadmedial.Cancelled()
         except Exception as error:  # handed to the GUI thread, which reports it
