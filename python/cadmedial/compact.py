@@ -51,21 +51,33 @@ def tolerance_of(result, tolerance):
     return value * float(diagonal)
 
 
-def simplify(result, tolerance):
+def simplify(result, tolerance, source=None, progress=None):
     """The compact MedialAxisResult of ``result`` within ``tolerance`` (model units or "P%").
 
-    From a result alone (no B-rep) the vertices are not moved onto the exact axis first, as
-    compute(..., simplify=) and the program's --simplify do: the Voronoi vertices' zig-zag then
-    stays within the tolerance, and fewer of them go.
+    source    None, or the shape ``result`` was computed from (a path, BREP text, a Part.Shape
+              or a _core.Shape): the vertices are then first moved onto its exact medial axis,
+              as compute(..., simplify=) and the program's --simplify do (stats["snap"]), within
+              half the result's spacing. Without it the Voronoi vertices' zig-zag about each
+              sheet stays within the tolerance, and fewer of them go.
+    progress  None or callable(stage, fraction) as for compute(); returning False cancels
+              (raises Cancelled).
 
     Its faces are triangles, each with the kind and solid of the polygon it lies in; its stats
-    are the full result's with "simplify" added (tolerance, max_error, vertices/faces/edges
-    before and after, euler and components before and after, seconds) and "vertices", "faces"
-    and "edges" the compact mesh's.
+    are the full result's with "simplify" added (tolerance, max_error, max_containment,
+    vertices/faces/edges before and after, euler and components before and after, seconds) and
+    "vertices", "faces" and "edges" the compact mesh's.
     """
+    from .api import read_shape
     tol = tolerance_of(result, tolerance)
-    mesh, figures = _core.simplify_mesh(result.mesh, tol)
     stats = dict(result.stats or {})
+    mesh = result.mesh
+    if source is not None:
+        spacing = stats.get("spacing")
+        if not spacing:
+            raise ValueError("simplify(source=...) needs the result's stats['spacing'] (a computed result)")
+        mesh, snapped = _core.snap_to_axis(read_shape(source), mesh, 0.5 * float(spacing))
+        stats["snap"] = dict(snapped)
+    mesh, figures = _core.simplify_mesh(mesh, tol, progress)
     stats["simplify"] = dict(figures)
     stats["vertices"], stats["faces"], stats["edges"] = mesh.num_vertices, mesh.num_faces, mesh.num_edges
     return MedialAxisResult(mesh, stats)

@@ -16,6 +16,9 @@ void bind_mesh(pybind11::module_& m);
 /// Shapes (read from files or BREP text), solids, parameter checks, sampling plans and compute.
 void bind_compute(pybind11::module_& m);
 
+/// simplify_mesh and snap_to_axis: the compact mesh.
+void bind_compact(pybind11::module_& m);
+
 /// boundary_distance: the engine's exact point-to-B-rep distance over an array of points.
 void bind_boundary_distance(pybind11::module_& m);
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "python_progress.h"
 #include "core/errors.h"
 #include "core/io/read_shape.h"
 #include "core/pipeline/compute_medial_axis.h"
@@ -65,37 +66,9 @@ ComputeParams make_params(double spacing, long long samples, double theta, doubl
 // returning a falsy value other than None to cancel.
 ComputeResult compute_with_callback(const TopoDS_Shape& shape, const ComputeParams& params,
                                     const py::object& callback) {
-  std::exception_ptr python_error;  // written with the GIL held
-  Progress progress = [&](const std::string& stage, double fraction) -> bool {
-    py::gil_scoped_acquire gil;
-    if (python_error) return false;  // another thread of the engine already failed
-    try {
-      // Ctrl-C in a console (main thread only) cancels too.
-      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-      if (callback.is_none()) return true;
-      py::object answer = callback(stage, fraction);
-      if (answer.is_none()) return true;
-      int truth = PyObject_IsTrue(answer.ptr());
-      if (truth < 0) throw py::error_already_set();
-      return truth != 0;
-    } catch (...) {
-      python_error = std::current_exception();
-      return false;
-    }
-  };
-
-  ComputeResult result;
-  try {
-    py::gil_scoped_release release;
-    result = compute_medial_axis(shape, params, progress);
-  } catch (...) {
-    // The engine reports the cancel we asked for as Cancelled (or fails on the way out): the
-    // caller wants the Python exception that caused it.
-    if (python_error) std::rethrow_exception(python_error);
-    throw;
-  }
-  if (python_error) std::rethrow_exception(python_error);
-  return result;
+  return with_python_progress(callback, [&](const Progress& progress) {
+    return compute_medial_axis(shape, params, progress);
+  });
 }
 
 }  // namespace
@@ -163,8 +136,6 @@ void bind_compute(py::module_& m) {
       [](const TopoDS_Shape& shape, double spacing, long long samples, double theta, double rho,
          const py::object& progress, bool plain_medial, bool adapt, bool refine, double min_feature,
          double simplify, bool simplify_relative) {
-        if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
-          throw py::type_error("progress must be callable(stage, fraction) or None");
         ComputeParams params = make_params(spacing, samples, theta, rho, plain_medial, adapt, refine, min_feature);
         params.compact.tolerance = simplify;
         params.compact.relative = simplify_relative;

@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "bindings.h"
-#include "core/compact/simplify_axis.h"
 #include "core/errors.h"
 #include "core/io/medial_mesh_to_brep.h"
 #include "core/io/write_medial_mesh.h"
@@ -232,33 +231,6 @@ void bind_mesh(py::module_& m) {
                " vertices, " + std::to_string(mesh.num_faces()) + " faces, " + std::to_string(mesh.num_edges()) +
                " edges>";
       });
-
-  m.def(
-      "simplify_mesh",
-      [](const MedialMesh& mesh, double tolerance) {
-        if (!(tolerance >= 0) || !std::isfinite(tolerance))
-          bad("tolerance must be a finite number >= 0, got " + std::to_string(tolerance));
-        SimplifyStats st;
-        MedialMesh out;
-        {
-          py::gil_scoped_release release;
-          out = simplify_axis(mesh, tolerance, &st);
-        }
-        py::dict d;
-        d["tolerance"] = st.tolerance;
-        d["vertices_before"] = st.vertices_before, d["faces_before"] = st.faces_before;
-        d["edges_before"] = st.edges_before;
-        d["vertices_after"] = st.vertices_after, d["faces_after"] = st.faces_after;
-        d["edges_after"] = st.edges_after;
-        d["max_error"] = st.max_error;
-        d["max_containment"] = st.max_containment;
-        d["euler_before"] = st.euler_before, d["euler_after"] = st.euler_after;
-        d["components_before"] = st.components_before, d["components_after"] = st.components_after;
-        d["seconds"] = st.seconds;
-        return py::make_tuple(std::move(out), d);
-      },
-      py::arg("mesh"), py::arg("tolerance"),
-      "The compact mesh within `tolerance` (model units) and a dict of figures (see simplify_axis.h).");
 
   m.def(
       "read_medial_mesh",

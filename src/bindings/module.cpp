@@ -9,4 +9,5 @@ PYBIND11_MODULE(_core, m) {
   cadmedial::bindings::bind_mesh(m);
   cadmedial::bindings::bind_compute(m);
   cadmedial::bindings::bind_boundary_distance(m);
+  cadmedial::bindings::bind_compact(m);
 }

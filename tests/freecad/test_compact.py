@@ -75,10 +75,13 @@ def test_compact_mesh_is_the_simplified_axis_with_the_full_axis_topology(doc):
     assert len(feature.RadiusColors) == feature.Mesh.CountPoints == feature.VertexCount
     assert feature.Simplified.startswith("{:,} faces from {:,}".format(
         simple["faces_after"], full.num_faces))
-    # Every point is a vertex of the full axis (FreeCAD keeps points as float32).
+    # Every point is a vertex of the full axis, moved onto the exact axis by at most the snap's
+    # largest move (FreeCAD keeps points as float32).
+    snap = medial_app.medial_result(feature).stats["snap"]
+    assert snap["snapped"] > 0
     points = np.array([tuple(p.Vector) for p in feature.Mesh.Points])
     gaps = np.sqrt(((points[:, None, :] - full.vertices[None, :, :]) ** 2).sum(axis=2)).min(axis=1)
-    assert gaps.max() < 1e-4
+    assert gaps.max() < snap["max_move"] + 1e-4
     # The same Euler characteristic as the full axis, both counted on the FreeCAD meshes.
     compact_euler = euler_of(feature.Mesh)
     assert full.num_edges == 0  # a box's axis has no 1-D edges: the meshes hold all of it
@@ -103,7 +106,8 @@ def test_a_new_simplify_simplifies_again_without_the_engine(doc, monkeypatch, ca
     feature.Simplify = 2.0
     doc.recompute()
     assert feature.Status == "ok" and feature.Proxy.full is full
-    assert feature.Mesh.CountFacets == cadmedial.simplify(full, "2%").num_faces < at_default
+    # Snapped onto the box's exact axis first, as compute(simplify=) does.
+    assert feature.Mesh.CountFacets == cadmedial.simplify(full, "2%", source=box.Shape).num_faces < at_default
     out, err = capfd.readouterr()  # the report view: what it gave, and that the axis was kept
     assert "%s: compact: %s (the axis not computed again)" % (feature.Label, feature.Simplified) in out + err
     assert len(feature.RadiusColors) == feature.Mesh.CountPoints
@@ -121,7 +125,7 @@ def test_saved_compact_reopens_in_a_fresh_process_and_simplifies_again(doc, tmp_
     feature = medial_app.make_medial_axis(add_box(doc), samples=SAMPLES)  # the default Simplify
     assert DEFAULT_PERCENT > 0 and feature.Simplify == pytest.approx(DEFAULT_PERCENT)
     before = figures(feature)
-    expected = cadmedial.simplify(feature.Proxy.full, "2%").num_faces  # what 2 % gives
+    expected = cadmedial.simplify(feature.Proxy.full, "2%", source=feature.Source.Shape).num_faces  # what 2 % gives
     path = tmp_path / "compact.FCStd"
     doc.saveAs(str(path))
     report = open_fresh(path, tmp_path, simplify=2.0)  # more than the default: fewer faces

@@ -170,3 +170,22 @@ def test_cli_simplify_writes_the_compact_mesh(tmp_path, box_step, cli):
     bad = subprocess.run([cli, "compute", box_step, "-o", str(out), "--simplify", "100%"], capture_output=True,
                          text=True)
     assert bad.returncode == 2 and "--simplify" in bad.stderr
+
+
+def test_simplify_with_the_source_snaps_as_compute_does(box_step):
+    full = cadmedial.compute(box_step, samples=3000)
+    snapped = cadmedial.simplify(full, "0.1%", source=box_step)
+    computed = cadmedial.compute(box_step, samples=3000, simplify="0.1%")
+    for key in ("vertices", "snapped", "max_move"):
+        assert snapped.stats["snap"][key] == computed.stats["snap"][key]
+    assert snapped.stats["snap"]["mean_move"] == pytest.approx(computed.stats["snap"]["mean_move"], rel=1e-12)
+    assert snapped.num_faces == computed.num_faces
+    gap, radius_off = box_axis_gap(snapped)
+    inner = np.asarray(snapped.radius) > 0.5
+    assert np.mean(gap[inner] <= 1e-7 * full.stats["diagonal"]) >= 0.95
+
+
+def test_simplify_can_be_cancelled(box_step):
+    full = cadmedial.compute(box_step, samples=3000)
+    with pytest.raises(cadmedial.Cancelled):
+        cadmedial.simplify(full, "0.1%", progress=lambda stage, fraction: fraction < 0.05)

@@ -1,9 +1,10 @@
 """The Simplify property of a MedialAxis object: the compact mesh it shows (issue 35, item 2).
 
     Simplify    percent of the solid's bounding-box diagonal (0.2 for new objects): the Mesh,
-                RadiusColors and ResultFile hold cadmedial.simplify(full, "0.2%"), triangles whose
-                vertices are vertices of the full axis and within which every ball of the full
-                axis lies (|dc| + |dr|), with its Euler characteristic and components; 0: the
+                RadiusColors and ResultFile hold cadmedial.simplify(full, "0.2%", source): the
+                full axis's vertices moved onto the source's exact axis, then simplified so that
+                every ball of it lies within the tolerance (|dc| + |dr|), with its Euler
+                characteristic and components; 0: the
                 full axis (what a document saved before the property holds, and keeps)
     Simplified  read-only: what the last compute gave ("1,922 faces from 54,436, every ball
                 within 0.785 mm"), empty for the full axis
@@ -52,12 +53,13 @@ def simplify_of(obj):
     return percent
 
 
-def compact_of(full, percent):
-    """The MedialAxisResult to show: cadmedial.simplify(full, "percent%"), or full itself for 0
-    (and for an axis without faces: nothing to simplify)."""
+def compact_of(full, percent, source=None, progress=None):
+    """The MedialAxisResult to show: cadmedial.simplify(full, "percent%", source), its vertices
+    first moved onto the exact axis of source when given (as compute(simplify=) does), or full
+    itself for 0 (and for an axis without faces: nothing to simplify)."""
     if not percent or not full.num_faces:
         return full
-    return cadmedial.simplify(full, "%r%%" % float(percent))
+    return cadmedial.simplify(full, "%r%%" % float(percent), source=source, progress=progress)
 
 
 def summary(result):

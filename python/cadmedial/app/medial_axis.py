@@ -222,20 +222,22 @@ def stored_as(obj, got, percent):
     """The StoredResult of got (a MedialAxisResult of the full axis, or a StoredResult) for
     Simplify = percent: got itself when it was made for it, else simplified (in the GUI in a
     thread, behind a progress dialog: seconds on parts of 50,000 polygons, docs/workbench.md)."""
+    source = None
     if isinstance(got, StoredResult):
         if got.percent == percent:
             return got
         got.discard()
-        got = got.full
+        got, source = got.full, got.source
     if not percent:
         return prepare_result(got, set_range(obj))
     color_range = set_range(obj)
+    if source is None and obj.Source is not None:
+        source = cadmedial.read_shape(Part.getShape(obj.Source))  # read here, in this thread
 
     def simplify(progress):
-        # The simplification reports no progress and cannot be stopped: Stop takes effect after.
         if progress is not None:
             progress("simplifying within %g %% of the diagonal" % percent, 0.0)
-        stored = prepare_result(got, color_range, percent)
+        stored = prepare_result(got, color_range, percent, source, progress)
         if progress is not None and not progress("simplified", 1.0):
             stored.discard()
             raise cadmedial.Cancelled()
@@ -270,7 +272,7 @@ def compute_shape(shape, spacing, samples, theta, rho, label, refine=None, min_f
         # with a progress dialog and Stop. Returns a StoredResult.
         core = cadmedial.read_shape(shape)  # the Part.Shape is read here, in this thread
         return registry.run_long("Medial axis of %s" % label, lambda progress: prepare_result(
-            cadmedial.compute(core, progress=progress, **params), color_range, simplify))
+            cadmedial.compute(core, progress=progress, **params), color_range, simplify, core, progress))
     if not App.GuiUp:
         return cadmedial.compute(shape, **params)
     with StatusBarProgress("Medial axis of %s" % label) as progress:

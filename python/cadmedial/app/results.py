@@ -27,13 +27,16 @@ class StoredResult:
     holding the PLY file until store_result() (or discard()) removes it.
 
     full     the engine's MedialAxisResult
+    source   the shape it was computed from (a _core.Shape), or None: the compact mesh's
+             vertices are moved onto its exact axis first
     percent  the Simplify it was made for (0: the full axis)
     result   what the object shows and keeps: the compact mesh of full, or full itself for 0"""
 
-    def __init__(self, result, color_range=None, simplify=0.0):
+    def __init__(self, result, color_range=None, simplify=0.0, source=None, progress=None):
         self.full = result
+        self.source = source
         self.percent = float(simplify or 0.0)
-        result = self.result = compact_of(result, self.percent)
+        result = self.result = compact_of(result, self.percent, source, progress)
         self.mesh = Mesh.Mesh()
         # False: no manifold check. The medial surface is non-manifold where sheets meet, and the
         # check (also done by Mesh.Mesh((points, facets))) would delete every facet at a junction.
@@ -54,11 +57,13 @@ class StoredResult:
         shutil.rmtree(self.folder, ignore_errors=True)
 
 
-def prepare_result(result, color_range=None, simplify=0.0):
+def prepare_result(result, color_range=None, simplify=0.0, source=None, progress=None):
     """The StoredResult of a MedialAxisResult (slow: run it off the GUI thread), coloured for
     color_range (low, high), or for its radii when None; simplify: percent of the diagonal for
-    the compact mesh (compact_mesh.py), 0 for the full axis."""
-    return StoredResult(result, color_range, simplify)
+    the compact mesh (compact_mesh.py), 0 for the full axis; source: the shape it was computed
+    from (its vertices are snapped onto that shape's exact axis first); progress as for
+    cadmedial.simplify."""
+    return StoredResult(result, color_range, simplify, source, progress)
 
 
 def store_result(obj, stored):

@@ -63,7 +63,7 @@ class ComputeJob:
                 result = cadmedial.compute(shape, progress=report, **params)
                 stage = "simplifying, building the mesh" if simplify else "building the mesh"
                 self.progress = (index, stage + " and its colours", 1.0)
-                self.results.append(prepare_result(result, simplify=simplify))
+                self.results.append(prepare_result(result, simplify=simplify, source=shape, progress=report))
                 if self._cancel.is_set():
                     raise cadmedial.Cancelled()
         except Exception as error:  # handed to the GUI thread, which reports it

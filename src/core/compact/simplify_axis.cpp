@@ -132,10 +132,15 @@ class Simplifier {
 
   TriangleComplex& complex() { return c_; }
 
-  void run() {
+  void run(const Progress& progress) {
+    report(progress, "compact", 0.0);
     for (int u = 0; u < c_.num_vertices(); ++u) push_best(u);
     std::vector<int> vanished, moved, nb;
+    // Each contraction removes a vertex: their share of the vertices is a fair measure of the work.
+    const double vertices = std::max(1, c_.num_vertices());
+    std::size_t done = 0;
     while (!queue_.empty()) {
+      if (++done % 4096 == 0) report(progress, "compact", std::min(0.99, static_cast<double>(done) / vertices));
       const Candidate top = queue_.top();
       queue_.pop();
       if (top.stamp != stamp_[static_cast<std::size_t>(top.u)] || c_.triangles_at(top.u).empty()) continue;
@@ -409,7 +414,7 @@ class Simplifier {
 
 }  // namespace
 
-MedialMesh simplify_axis(const MedialMesh& mesh, double tolerance, SimplifyStats* stats) {
+MedialMesh simplify_axis(const MedialMesh& mesh, double tolerance, SimplifyStats* stats, const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
   if (!(tolerance >= 0) || !std::isfinite(tolerance)) tolerance = 0;
   // Pinned: a vertex added at a polygon's centre is not the full axis's, and stays where it is
@@ -420,7 +425,7 @@ MedialMesh simplify_axis(const MedialMesh& mesh, double tolerance, SimplifyStats
   for (std::size_t v = 0; v < added.size(); ++v)
     if (added[v]) s.complex().pin(static_cast<int>(v));
   const compact::ComplexTopology before = compact::topology_of(s.complex());
-  s.run();
+  s.run(progress);
   MedialMesh out = s.complex().to_mesh(work);
   if (stats) {
     const compact::ComplexTopology after = compact::topology_of(s.complex());

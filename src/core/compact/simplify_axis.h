@@ -14,6 +14,7 @@
 
 #include <cstddef>
 
+#include "../progress.h"
 #include "../types.h"
 
 namespace cadmedial {
@@ -35,7 +36,8 @@ struct SimplifyStats {
 
 /// The compact mesh of `mesh` (faces become triangles; each keeps the kind and solid of the
 /// polygon it lies in). tolerance >= 0 in model units; 0 removes only what moves no ball.
-/// Deterministic.
-MedialMesh simplify_axis(const MedialMesh& mesh, double tolerance, SimplifyStats* stats = nullptr);
+/// Deterministic. Reports progress as stage "compact"; throws Cancelled when it returns false.
+MedialMesh simplify_axis(const MedialMesh& mesh, double tolerance, SimplifyStats* stats = nullptr,
+                         const Progress& progress = {});
 
 }  // namespace cadmedial

@@ -935,7 +935,7 @@ ComputeResult compute_as_given(const TopoDS_Shape& shape, const ComputeParams& p
     const auto t_compact = Clock::now();
     SimplifyStats st;
     const double tol = params.compact.relative ? params.compact.tolerance * stats.diagonal : params.compact.tolerance;
-    result.mesh = simplify_axis(result.mesh, tol, &st);
+    result.mesh = simplify_axis(result.mesh, tol, &st, progress);
     result.mesh.sort_canonically();
     stats.simplify = st;
     add_timing(stats.timings, "compact", seconds_since(t_compact));
