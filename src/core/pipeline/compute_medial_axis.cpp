@@ -939,6 +939,11 @@ ComputeResult compute_as_given(const TopoDS_Shape& shape, const ComputeParams& p
     result.mesh.sort_canonically();
     stats.simplify = st;
     add_timing(stats.timings, "compact", seconds_since(t_compact));
+    if (st.faces_after >= st.faces_before)
+      stats.warnings.push_back("the compact mesh has " + std::to_string(st.faces_after) + " triangles, no fewer than the " +
+                               std::to_string(st.faces_before) +
+                               " polygons of the full axis: most of it is seams and borders between Voronoi slivers, "
+                               "which the simplification keeps (docs/compact.md)");
   }
   stats.vertices = result.mesh.num_vertices();
   stats.faces = result.mesh.num_faces();
