@@ -109,6 +109,20 @@ bool sort_by_buckets(std::vector<T>& v, std::size_t nb, const Bucket& bucket, co
 
 }  // namespace
 
+std::vector<int> MedialMesh::vertices_of_solid(int solid_index) const {
+  std::vector<std::uint8_t> mine(num_vertices(), 0);
+  for (std::size_t f = 0; f < num_faces(); ++f)
+    if (solid[f] == solid_index)
+      for (int k = 0; k < face_size(f); ++k) mine[static_cast<std::size_t>(face(f)[k])] = 1;
+  for (std::size_t e = 0; e < num_edges(); ++e)
+    if (edge_solid[e] == solid_index)
+      mine[static_cast<std::size_t>(edges[e][0])] = mine[static_cast<std::size_t>(edges[e][1])] = 1;
+  std::vector<int> out;
+  for (std::size_t v = 0; v < mine.size(); ++v)
+    if (mine[v]) out.push_back(static_cast<int>(v));
+  return out;
+}
+
 void MedialMesh::sort_canonically() {
   const std::size_t nv = vertices.size();
   // Vertices by (position, radius), the keys side by side rather than behind indices.

@@ -43,6 +43,8 @@ struct MedialMesh {
 
   /// Appends a polygon; returns its index.
   std::size_t add_face(const std::vector<int>& polygon, FaceKind face_kind, int solid_index);
+  /// The vertices that faces or 1-D edges of solid `solid_index` use, in index order.
+  std::vector<int> vertices_of_solid(int solid_index) const;
   /// Appends another mesh (its vertices are renumbered).
   void append(const MedialMesh& other);
   /// Orders vertices by position and faces and edges by their vertices (each polygon starting at

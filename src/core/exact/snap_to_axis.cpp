@@ -49,16 +49,7 @@ double largest_tangent_ball(BoundaryDistance& dist, const Point3& p, const Point
 
 SnapStats snap_to_axis(const TopoDS_Solid& solid, int solid_index, double diag, double reach, MedialMesh& mesh) {
   SnapStats st;
-  std::vector<std::uint8_t> mine(mesh.num_vertices(), 0);
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
-    if (mesh.solid[f] == solid_index)
-      for (int k = 0; k < mesh.face_size(f); ++k) mine[static_cast<std::size_t>(mesh.face(f)[k])] = 1;
-  for (std::size_t e = 0; e < mesh.num_edges(); ++e)
-    if (mesh.edge_solid[e] == solid_index)
-      mine[static_cast<std::size_t>(mesh.edges[e][0])] = mine[static_cast<std::size_t>(mesh.edges[e][1])] = 1;
-  std::vector<int> todo;
-  for (std::size_t v = 0; v < mine.size(); ++v)
-    if (mine[v]) todo.push_back(static_cast<int>(v));
+  const std::vector<int> todo = mesh.vertices_of_solid(solid_index);
   st.vertices = todo.size();
   if (todo.empty()) return st;
   const double eps = 1e-9 * diag;
